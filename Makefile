@@ -1,0 +1,36 @@
+# The two commands of the README, and a few more. Each installs missing Debian packages,
+# configures once and builds incrementally.
+BUILD      ?= build
+JOBS       ?= $(shell nproc)
+SCENE      ?= models/ring_inelastic.toml
+CMAKE_ARGS ?=
+
+.PHONY: run test deps build bench test-sanitize clean
+
+deps:
+	@./scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	$(BUILD)/cli/plastica run $(SCENE)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+test-sanitize: deps
+	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPLASTICA_SANITIZE=ON $(CMAKE_ARGS)
+	cmake --build build-sanitize -j $(JOBS)
+	cd build-sanitize && ctest --output-on-failure -j $(JOBS)
+
+bench: deps
+	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DPLASTICA_BENCH=ON -DPLASTICA_TESTS=OFF
+	cmake --build build-bench -j $(JOBS) --target plastica_bench
+	build-bench/bench/plastica_bench
+
+clean:
+	rm -rf $(BUILD) build-sanitize build-bench

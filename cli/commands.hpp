@@ -1,0 +1,17 @@
+// The subcommands. Each parses its own options and returns the process exit code:
+// 0 success, 1 a comparison failed, 2 bad input, 3 the analysis stopped early, 130 interrupted.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plastica::cli {
+
+enum ExitCode { ok = 0, check_failed = 1, bad_input = 2, stopped_early = 3, interrupted = 130 };
+
+using Args = std::vector<std::string>;
+
+int run_command(const Args& args);
+int section_command(const Args& args);
+
+} // namespace plastica::cli

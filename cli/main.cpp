@@ -1,0 +1,48 @@
+// plastica: co-rotational beam-columns with plastic hinges and unilateral foundations.
+// This file only dispatches to the subcommands.
+#include "commands.hpp"
+
+#include <cstring>
+#include <malloc.h>
+#include <iostream>
+#include <map>
+
+namespace {
+
+const char* usage = R"(Usage: plastica COMMAND [options]
+
+Commands:
+  run SCENE        solve a scene: curve.csv, run.json, VTU/PVD series, and pictures
+  section SCENE    moment-curvature and N-M capacity curves of a scene's sections
+
+Run 'plastica COMMAND --help' for the options of a command.
+Exit codes: 0 success, 1 comparison failed, 2 bad input, 3 analysis stopped early,
+130 interrupted.
+)";
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace plastica::cli;
+    // VTK's XML writer allocates and frees large buffers for every file; without this glibc
+    // hands them back to the kernel each time and a 200-step series spends most of its time
+    // in brk and page faults.
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    mallopt(M_TOP_PAD, 64 << 20);
+    const std::map<std::string, int (*)(const Args&)> commands{
+        {"run", run_command}, {"section", section_command}};
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+        std::cout << usage;
+        return argc < 2 ? bad_input : ok;
+    }
+    if (!std::strcmp(argv[1], "--version")) {
+        std::cout << "plastica " << PLASTICA_VERSION << "\n";
+        return ok;
+    }
+    const auto command = commands.find(argv[1]);
+    if (command == commands.end()) {
+        std::cerr << "plastica: unknown command '" << argv[1] << "'\n" << usage;
+        return bad_input;
+    }
+    return command->second(Args(argv + 2, argv + argc));
+}

@@ -1,0 +1,54 @@
+#include "output_folder.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace plastica::cli {
+
+namespace fs = std::filesystem;
+
+std::string default_output_folder(const std::string& scene_name) {
+    return (fs::path("out") / scene_name).string();
+}
+
+namespace {
+// The scene name recorded in an earlier run.json, or "" when there is none.
+std::string recorded_scene(const fs::path& folder) {
+    std::ifstream in(folder / "run.json");
+    if (!in) return {};
+    std::stringstream text;
+    text << in.rdbuf();
+    std::smatch m;
+    const std::string s = text.str();
+    if (std::regex_search(s, m, std::regex("\"scene\":\\s*\"([^\"]*)\""))) return m[1];
+    return {};
+}
+} // namespace
+
+void prepare_output_folder(const std::string& folder, const std::string& scene_name, bool force) {
+    const fs::path dir(folder);
+    if (fs::exists(dir) && !fs::is_directory(dir))
+        throw std::runtime_error("output path " + folder + " exists and is not a folder");
+    if (fs::exists(dir)) {
+        const std::string other = recorded_scene(dir);
+        const bool foreign = !other.empty() && other != scene_name;
+        const bool unknown = other.empty() && !fs::is_empty(dir);
+        if ((foreign || unknown) && !force)
+            throw std::runtime_error("output folder " + folder + " holds " +
+                                     (foreign ? "results of scene '" + other + "'" : "files of another program") +
+                                     "; choose another folder with -o or pass --force to replace them");
+        // Results of an earlier run: remove them so no stale step joins the new series.
+        for (const char* sub : {"vtu", "frames"}) fs::remove_all(dir / sub);
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            const std::string ext = entry.path().extension().string();
+            if (ext == ".pvd" || ext == ".vtp" || ext == ".csv" || ext == ".json" || ext == ".png" || ext == ".gif")
+                fs::remove(entry.path());
+        }
+    }
+    fs::create_directories(dir);
+}
+
+} // namespace plastica::cli

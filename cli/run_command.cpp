@@ -1,0 +1,119 @@
+// plastica run: read a scene, solve it, write curve.csv, run.json and the VTU/PVD series,
+// then render the series unless --no-render.
+#include "commands.hpp"
+#include "options.hpp"
+#include "output_folder.hpp"
+
+#include "analysis/path_following.hpp"
+#include "curve_writer.hpp"
+#include "run_report.hpp"
+#include "scene_reader.hpp"
+#include "vtu_series_writer.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+
+namespace plastica::cli {
+
+namespace {
+
+std::atomic<bool> stop_requested{false};
+extern "C" void request_stop(int) { stop_requested = true; }
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+} // namespace
+
+int run_command(const Args& args) {
+    po::options_description options("Options");
+    options.add_options()
+        ("scene", po::value<std::string>()->required(), "scene file (TOML)")
+        ("output,o", po::value<std::string>(), "output folder (default out/<scene>)")
+        ("every", po::value<int>()->default_value(1), "write every k-th step (first and last always)")
+        ("time", po::value<std::string>()->default_value("step"), "PVD time: step or arc_length")
+        ("no-render", "solve and write results only, draw nothing")
+        ("force", "use an output folder that holds another scene's results")
+        ("quiet,q", "no progress on stderr");
+    po::positional_options_description positional;
+    positional.add("scene", 1);
+    po::variables_map vm;
+    if (auto code = parse_options(args, "plastica run SCENE [-o DIR] [options]", options, positional, vm))
+        return *code;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string scene_file = vm["scene"].as<std::string>();
+    Model model;
+    try {
+        model = read_scene(scene_file);
+    } catch (const SceneError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    }
+    const int every = vm["every"].as<int>();
+    const std::string time = vm["time"].as<std::string>();
+    if (every < 1 || (time != "step" && time != "arc_length")) {
+        std::cerr << "plastica: --every takes a whole number ≥ 1 and --time 'step' or 'arc_length'\n";
+        return bad_input;
+    }
+    PathFollowing analysis(model);
+    if (const std::string m = analysis.initial_mechanism(); !m.empty()) {
+        std::cerr << "plastica: " << scene_file << ": " << m << "\n";
+        return bad_input;
+    }
+    const std::string folder = vm.count("output") ? vm["output"].as<std::string>() : default_output_folder(model.name);
+    try {
+        prepare_output_folder(folder, model.name, vm.count("force") > 0);
+    } catch (const std::exception& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    }
+    const double read_seconds = seconds_since(t0);
+
+    namespace fs = std::filesystem;
+    CurveWriter curve((fs::path(folder) / "curve.csv").string());
+    VtuSeriesWriter series(model, folder, {every, time == "step" ? SeriesTime::step : SeriesTime::arc_length});
+    RunReport report;
+    report.scene_file = scene_file;
+    report.model = &model;
+    const bool quiet = vm.count("quiet") > 0;
+    auto track = [&](const StepResult& r) {
+        report.last = r;
+        if (r.load > report.peak_load) {
+            report.peak_load = r.load;
+            report.peak_load_displacement = r.control_displacement;
+        }
+        if (!quiet && r.step % 20 == 0)
+            std::cerr << "step " << r.step << "  load " << r.load << "  displacement "
+                      << r.control_displacement << "  iterations " << r.iterations << "\n";
+    };
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
+    RunControl control;
+    control.interrupt = &stop_requested;
+    const auto t1 = std::chrono::steady_clock::now();
+    report.summary = analysis.run({std::ref(curve), std::ref(series), track}, control);
+    series.finish();
+    report.stage_seconds = {{"read", read_seconds}, {"analysis_and_output", seconds_since(t1)}};
+    write_run_report((fs::path(folder) / "run.json").string(), report);
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+
+    if (!quiet)
+        std::cerr << model.name << ": " << report.summary.reason << " after " << report.summary.steps
+                  << " steps (" << report.summary.iterations << " iterations); peak load "
+                  << report.peak_load << "; output in " << folder << "\n";
+    if (report.summary.status == RunStatus::interrupted) return interrupted;
+    if (report.summary.status != RunStatus::completed) {
+        std::cerr << "plastica: " << scene_file << ": analysis stopped early: " << report.summary.reason
+                  << " (the " << report.summary.steps << " converged steps are kept)\n";
+        return stopped_early;
+    }
+    return ok;
+}
+
+} // namespace plastica::cli

@@ -1,0 +1,70 @@
+// Incremental-iterative path following of R(u, λ) = λ·F − f_int(u) = 0 (prescribed
+// displacements scale with λ too). One Newton corrector serves three constraints on the
+// increment: load control (Δλ fixed), displacement control of one DOF (Batoz & Dhatt), and
+// Crisfield's cylindrical arc length ‖Δu‖ = Δl with the root nearest the previous direction.
+// Increments adapt to the iteration count; a failed increment is reverted and halved.
+#pragma once
+
+#include "analysis/step_result.hpp"
+#include "analysis/structural_system.hpp"
+#include "model/model.hpp"
+#include "solver/linear_solver.hpp"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+using StepObserver = std::function<void(const StepResult&)>;
+
+struct RunControl {
+    const std::atomic<bool>* interrupt = nullptr; // set from a signal handler to stop cleanly
+    // Unilateral springs keep their active set after this many iterations of one increment,
+    // then the set is re-checked at convergence (remedy for chattering).
+    int freeze_active_after = 12;
+};
+
+// Per-iteration record for solver diagnostics (quadratic convergence checks).
+struct IterationTrace {
+    int step = 0;
+    int iteration = 0;
+    double residual = 0.0; // relative
+};
+
+class PathFollowing {
+public:
+    explicit PathFollowing(const Model& model);
+
+    RunSummary run(const std::vector<StepObserver>& observers, const RunControl& control = {});
+    // Empty when the unloaded structure is stable; otherwise names the DOF that is free
+    // (a mechanism before loading, e.g. a missing support).
+    std::string initial_mechanism();
+
+    const StructuralSystem& system() const { return system_; }
+    const std::vector<IterationTrace>& trace() const { return trace_; }
+
+private:
+    enum class Attempt { converged, failed, non_finite };
+    Attempt attempt_increment(double h, const RunControl& control, int& iterations);
+    double control_value(const Eigen::VectorXd& u) const;
+    StepResult make_result(int step, int iterations) const;
+
+    Model model_;
+    StructuralSystem system_;
+    LinearSolver solver_;
+    Eigen::VectorXd u_;     // full displacement vector
+    Eigen::VectorXd force_; // reference loads, full
+    Eigen::VectorXd ubar_;  // reference prescribed displacements, full
+    Eigen::VectorXd previous_increment_; // free DOFs, last converged Δu
+    double lambda_ = 0.0;
+    double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference
+    double arc_length_ = 0.0;
+    double last_residual_ = 0.0;
+    int step_ = 0;
+    int control_equation_ = -1;
+    std::vector<IterationTrace> trace_;
+};
+
+} // namespace plastica

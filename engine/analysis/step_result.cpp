@@ -1,0 +1,17 @@
+#include "analysis/step_result.hpp"
+
+namespace plastica {
+
+const char* to_string(RunStatus status) {
+    switch (status) {
+    case RunStatus::completed: return "completed";
+    case RunStatus::no_convergence: return "no_convergence";
+    case RunStatus::limit_load: return "limit_load";
+    case RunStatus::non_finite: return "non_finite";
+    case RunStatus::interrupted: return "interrupted";
+    case RunStatus::step_limit: return "step_limit";
+    }
+    return "unknown";
+}
+
+} // namespace plastica

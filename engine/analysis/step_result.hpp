@@ -1,0 +1,61 @@
+// What the analysis reports for every converged step: the state the observers (VTU writer,
+// curve writer, progress) read. Nothing here refers to solver internals.
+#pragma once
+
+#include "element/basic_law.hpp"
+#include "element/corotational_beam.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+struct ElementResult {
+    BeamForces forces;
+    bool hinged = false;
+    std::array<HingeReport, 2> hinge{};
+};
+
+struct SpringResult {
+    int node = 0;
+    bool unilateral = false;
+    bool active = false;
+    double gap = 0.0;
+    std::array<double, 3> force{0.0, 0.0, 0.0}; // on the node, from the spring or the base
+};
+
+struct StepResult {
+    int step = 0;                   // 0 is the unloaded state
+    double load_factor = 0.0;       // λ
+    double load = 0.0;              // reported load (λ · ‖F_ref‖ · load_scale)
+    double control_displacement = 0.0;
+    double arc_length = 0.0;        // cumulative path length, monotone
+    int iterations = 0;
+    int negative_pivots = 0;
+    double residual = 0.0;          // relative residual at convergence
+    std::vector<double> displacement; // 3 per node: ux, uy, rotation
+    std::vector<double> reaction;     // 3 per node, at supported DOFs (zero elsewhere)
+    std::vector<ElementResult> elements;
+    std::vector<SpringResult> springs;
+    int contact_count = 0;
+    double base_reaction = 0.0;     // total normal force of the base
+    double contact_length = 0.0;    // length of the deformed structure along active nodes
+    int hinge_count = 0;            // element ends yielding or plastic
+    int plastic_hinge_count = 0;    // element ends at capacity
+};
+
+enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit };
+
+struct RunSummary {
+    RunStatus status = RunStatus::completed;
+    std::string reason;
+    int steps = 0;
+    int iterations = 0;
+    int cut_steps = 0;
+    double seconds = 0.0;
+};
+
+const char* to_string(RunStatus status);
+
+} // namespace plastica

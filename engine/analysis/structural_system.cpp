@@ -1,0 +1,184 @@
+#include "analysis/structural_system.hpp"
+
+#include "element/plastic_hinge_law.hpp"
+
+#include <cmath>
+
+namespace plastica {
+
+namespace {
+
+std::vector<int> number_equations(const Model& model, std::vector<bool>& supported, int& free_count) {
+    const int n = model.dof_count();
+    supported.assign(n, false);
+    std::vector<bool> constrained(n, false);
+    for (const Support& s : model.supports)
+        for (int d = 0; d < dofs_per_node; ++d)
+            if (s.fixed[d]) supported[dofs_per_node * s.node + d] = constrained[dofs_per_node * s.node + d] = true;
+    for (const PrescribedDisplacement& p : model.prescribed)
+        constrained[dofs_per_node * p.node + p.dof] = true;
+    std::vector<int> eq(n, -1);
+    free_count = 0;
+    for (int i = 0; i < n; ++i)
+        if (!constrained[i]) eq[i] = free_count++;
+    return eq;
+}
+
+std::vector<std::vector<int>> assembly_blocks(const Model& model, const std::vector<int>& eq) {
+    std::vector<std::vector<int>> blocks;
+    for (const ElementSpec& e : model.elements) {
+        std::vector<int> b;
+        for (int node : {e.node_i, e.node_j})
+            for (int d = 0; d < dofs_per_node; ++d) b.push_back(eq[dofs_per_node * node + d]);
+        blocks.push_back(std::move(b));
+    }
+    for (const FoundationSpring& s : model.springs) {
+        std::vector<int> b;
+        for (int d = 0; d < dofs_per_node; ++d) b.push_back(eq[dofs_per_node * s.node + d]);
+        blocks.push_back(std::move(b));
+    }
+    return blocks;
+}
+
+std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0) {
+    if (s.steel) return std::make_unique<PlasticHingeLaw>(s, L0);
+    return std::make_unique<ElasticLaw>(s.E * s.area, s.E * s.inertia, L0);
+}
+
+} // namespace
+
+StructuralSystem::StructuralSystem(const Model& model)
+    : element_specs_(model.elements), nodes_(model.nodes), foundation_(model),
+      equation_(number_equations(model, supported_, free_count_)),
+      assembler_(free_count_, assembly_blocks(model, equation_)) {
+    elements_.reserve(model.elements.size());
+    for (const ElementSpec& e : model.elements) {
+        const Node& a = model.nodes[e.node_i];
+        const Node& b = model.nodes[e.node_j];
+        elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y)));
+    }
+    internal_ = Eigen::VectorXd::Zero(dof_count());
+    coupling_ = Eigen::VectorXd::Zero(free_count_);
+}
+
+bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar,
+                                bool freeze_active) {
+    internal_.setZero();
+    coupling_.setZero();
+    assembler_.set_zero();
+    force_scale_ = 0.0;
+    Vector6 d, f;
+    Matrix6 k;
+    int dofs[6];
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        const ElementSpec& spec = element_specs_[e];
+        for (int a = 0; a < 3; ++a) {
+            dofs[a] = dofs_per_node * spec.node_i + a;
+            dofs[3 + a] = dofs_per_node * spec.node_j + a;
+        }
+        for (int a = 0; a < 6; ++a) d[a] = u[dofs[a]];
+        elements_[e].compute(d, f, &k);
+        if (!f.allFinite() || !k.allFinite()) {
+            non_finite_where_ = "element " + std::to_string(e + 1) + " (nodes " +
+                                std::to_string(spec.node_i + 1) + "–" +
+                                std::to_string(spec.node_j + 1) + ")";
+            return false;
+        }
+        force_scale_ += f.squaredNorm();
+        for (int a = 0; a < 6; ++a) {
+            internal_[dofs[a]] += f[a];
+            const int row = equation_[dofs[a]];
+            if (row < 0) continue;
+            for (int b = 0; b < 6; ++b)
+                if (equation_[dofs[b]] < 0 && ubar[dofs[b]] != 0.0)
+                    coupling_[row] += k(a, b) * ubar[dofs[b]];
+        }
+        assembler_.add(e, k);
+    }
+    foundation_.evaluate(u, freeze_active);
+    for (std::size_t s = 0; s < foundation_.size(); ++s) {
+        const int base = dofs_per_node * foundation_.spring(s).node;
+        const Eigen::Vector3d fs = foundation_.internal_force(s);
+        internal_.segment<3>(base) += fs;
+        force_scale_ += fs.squaredNorm();
+        assembler_.add(elements_.size() + s, foundation_.tangent(s));
+    }
+    force_scale_ = std::sqrt(force_scale_);
+    return true;
+}
+
+Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {
+    Eigen::VectorXd free(free_count_);
+    for (int i = 0; i < dof_count(); ++i)
+        if (equation_[i] >= 0) free[equation_[i]] = full[i];
+    return free;
+}
+
+void StructuralSystem::scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const {
+    for (int i = 0; i < dof_count(); ++i)
+        if (equation_[i] >= 0) full[i] = free[equation_[i]];
+}
+
+void StructuralSystem::commit() {
+    for (CorotationalBeam& e : elements_) e.commit();
+}
+
+void StructuralSystem::revert() {
+    for (CorotationalBeam& e : elements_) e.revert();
+}
+
+void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& external,
+                              StepResult& out) const {
+    out.displacement.assign(u.data(), u.data() + u.size());
+    out.reaction.assign(u.size(), 0.0);
+    for (int i = 0; i < dof_count(); ++i)
+        if (equation_[i] < 0) out.reaction[i] = internal_[i] - external[i];
+    // Spring forces are not support reactions: take them out of the supported DOFs.
+    for (std::size_t s = 0; s < foundation_.size(); ++s) {
+        const int base = dofs_per_node * foundation_.spring(s).node;
+        for (int d = 0; d < dofs_per_node; ++d)
+            if (equation_[base + d] < 0) out.reaction[base + d] -= foundation_.internal_force(s)[d];
+    }
+
+    out.elements.resize(elements_.size());
+    out.hinge_count = out.plastic_hinge_count = 0;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        ElementResult& r = out.elements[e];
+        r.forces = elements_[e].forces();
+        r.hinged = elements_[e].law().has_hinges();
+        for (int end = 0; end < 2 && r.hinged; ++end) {
+            r.hinge[end] = elements_[e].law().hinge(end);
+            if (r.hinge[end].state != HingeState::elastic) ++out.hinge_count;
+            if (r.hinge[end].state == HingeState::plastic || r.hinge[end].state == HingeState::failed)
+                ++out.plastic_hinge_count;
+        }
+    }
+
+    out.springs.resize(foundation_.size());
+    out.contact_count = 0;
+    out.base_reaction = 0.0;
+    std::vector<bool> in_contact(nodes_.size(), false);
+    for (std::size_t s = 0; s < foundation_.size(); ++s) {
+        const SpringState& st = foundation_.states()[s];
+        SpringResult& r = out.springs[s];
+        r.node = st.node;
+        r.unilateral = st.unilateral;
+        r.active = st.unilateral ? st.active : true;
+        r.gap = st.gap;
+        r.force = {st.force[0], st.force[1], st.force[2]};
+        if (st.unilateral && st.active) {
+            ++out.contact_count;
+            out.base_reaction += st.force.head<2>().norm();
+            in_contact[st.node] = true;
+        }
+    }
+    out.contact_length = 0.0;
+    for (const ElementSpec& e : element_specs_) {
+        if (!in_contact[e.node_i] || !in_contact[e.node_j]) continue;
+        const double dx = nodes_[e.node_j].x + u[3 * e.node_j] - nodes_[e.node_i].x - u[3 * e.node_i];
+        const double dy = nodes_[e.node_j].y + u[3 * e.node_j + 1] - nodes_[e.node_i].y - u[3 * e.node_i + 1];
+        out.contact_length += std::hypot(dx, dy);
+    }
+}
+
+} // namespace plastica

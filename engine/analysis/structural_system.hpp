@@ -1,0 +1,64 @@
+// The discrete structure: elements and foundation springs over the model's DOFs. It evaluates
+// internal forces and the tangent on the free DOFs for a given full displacement vector, and
+// the coupling K_fp·ū that prescribed displacements exert on the free DOFs.
+#pragma once
+
+#include "analysis/step_result.hpp"
+#include "contact/foundation.hpp"
+#include "element/corotational_beam.hpp"
+#include "model/model.hpp"
+#include "solver/block_assembler.hpp"
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+class StructuralSystem {
+public:
+    explicit StructuralSystem(const Model& model);
+
+    int dof_count() const { return static_cast<int>(equation_.size()); }
+    int free_count() const { return free_count_; }
+    // Equation number of a DOF, or −1 when it is supported or prescribed.
+    int equation(int dof) const { return equation_[dof]; }
+
+    // Evaluates at the full displacement vector u; ubar is the prescribed-displacement
+    // direction. Returns false (and names the element) when a force is not finite.
+    bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, bool freeze_active);
+
+    const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
+    const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū, free DOFs
+    const SparseMatrix& tangent() const { return assembler_.matrix(); }
+    double force_scale() const { return force_scale_; }
+    const std::string& non_finite_where() const { return non_finite_where_; }
+    const Foundation& foundation() const { return foundation_; }
+
+    Eigen::VectorXd gather(const Eigen::VectorXd& full) const;
+    void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;
+
+    void commit();
+    void revert();
+
+    // Fills the element, spring and reaction parts of a step result (committed state).
+    void report(const Eigen::VectorXd& u, const Eigen::VectorXd& external, StepResult& out) const;
+
+    const std::vector<CorotationalBeam>& elements() const { return elements_; }
+
+private:
+    std::vector<ElementSpec> element_specs_;
+    std::vector<Node> nodes_;
+    std::vector<CorotationalBeam> elements_;
+    Foundation foundation_;
+    std::vector<bool> supported_; // filled while the equations are numbered
+    int free_count_ = 0;
+    std::vector<int> equation_;
+    BlockAssembler assembler_;
+    Eigen::VectorXd internal_;
+    Eigen::VectorXd coupling_;
+    double force_scale_ = 0.0;
+    std::string non_finite_where_;
+};
+
+} // namespace plastica

@@ -1,0 +1,65 @@
+#include "contact/foundation.hpp"
+
+namespace plastica {
+
+Foundation::Foundation(const Model& model)
+    : springs_(model.springs), nodes_(model.nodes), base_(model.base.value_or(BaseLine{})) {
+    const double n = std::hypot(base_.normal[0], base_.normal[1]);
+    base_.normal = {base_.normal[0] / n, base_.normal[1] / n};
+    states_.resize(springs_.size());
+    for (std::size_t k = 0; k < springs_.size(); ++k) {
+        states_[k].node = springs_[k].node;
+        states_[k].unilateral = springs_[k].unilateral;
+    }
+}
+
+void Foundation::evaluate(const Eigen::VectorXd& u, bool freeze_active) {
+    changed_ = false;
+    const Eigen::Vector2d normal(base_.normal[0], base_.normal[1]);
+    for (std::size_t k = 0; k < springs_.size(); ++k) {
+        const FoundationSpring& sp = springs_[k];
+        SpringState& st = states_[k];
+        const Eigen::Vector3d d = u.segment<3>(dofs_per_node * sp.node);
+        if (!sp.unilateral) {
+            st.force = -Eigen::Vector3d(sp.kx * d[0], sp.ky * d[1], sp.krot * d[2]);
+            continue;
+        }
+        const Node& n0 = nodes_[sp.node];
+        const Eigen::Vector2d x(n0.x + d[0], n0.y + d[1]);
+        st.gap = (x - Eigen::Vector2d(base_.point[0], base_.point[1])).dot(normal);
+        const bool touching = st.gap <= 0.0;
+        if (!freeze_active) {
+            changed_ = changed_ || touching != st.active;
+            st.active = touching;
+        }
+        st.force.setZero();
+        if (st.active) st.force.head<2>() = -sp.ky * st.gap * normal;
+    }
+}
+
+bool Foundation::active_set_consistent() const {
+    for (const SpringState& st : states_)
+        if (st.unilateral && st.active != (st.gap <= 0.0)) return false;
+    return true;
+}
+
+Eigen::Matrix3d Foundation::tangent(std::size_t k) const {
+    const FoundationSpring& sp = springs_[k];
+    Eigen::Matrix3d t = Eigen::Matrix3d::Zero();
+    if (!sp.unilateral) {
+        t.diagonal() << sp.kx, sp.ky, sp.krot;
+    } else if (states_[k].active) {
+        const Eigen::Vector2d n(base_.normal[0], base_.normal[1]);
+        t.topLeftCorner<2, 2>() = sp.ky * n * n.transpose();
+    }
+    return t;
+}
+
+int Foundation::active_contacts() const {
+    int count = 0;
+    for (const SpringState& st : states_)
+        if (st.unilateral && st.active) ++count;
+    return count;
+}
+
+} // namespace plastica

@@ -1,0 +1,55 @@
+// Discrete foundation springs (seed eq. 5, Kb = diag(kx, ky, kθ)) and frictionless unilateral
+// contact with a straight rigid base by the penalty method. A bilateral spring always acts:
+// f = Kb·u. A unilateral spring acts along the base normal n only while the node touches or
+// penetrates the base, gap g = (x − p)·n ≤ 0 (equality included, so a ring that starts on the
+// base is held): f = k·g·n, tangent k·n nᵀ. The active set is re-read from the current
+// positions at every evaluation; the driver decides when it has settled.
+#pragma once
+
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace plastica {
+
+struct SpringState {
+    int node = 0;
+    bool unilateral = false;
+    bool active = true;
+    double gap = 0.0;                                  // unilateral only
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();   // force the spring exerts on the node
+};
+
+class Foundation {
+public:
+    explicit Foundation(const Model& model);
+
+    bool empty() const { return springs_.empty(); }
+    std::size_t size() const { return springs_.size(); }
+    const FoundationSpring& spring(std::size_t k) const { return springs_[k]; }
+
+    // Evaluates every spring at the full displacement vector. With freeze_active the
+    // unilateral springs keep the active flags of the previous evaluation.
+    void evaluate(const Eigen::VectorXd& u, bool freeze_active);
+    // Whether the active set used matches the geometry (it does unless frozen and stale).
+    bool active_set_consistent() const;
+    // Whether the last evaluation changed the active set compared with the one before.
+    bool active_set_changed() const { return changed_; }
+
+    const std::vector<SpringState>& states() const { return states_; }
+    // Internal force (3 entries) and tangent (3×3) of spring k at the last evaluation.
+    Eigen::Vector3d internal_force(std::size_t k) const { return -states_[k].force; }
+    Eigen::Matrix3d tangent(std::size_t k) const;
+
+    int active_contacts() const;
+
+private:
+    std::vector<FoundationSpring> springs_;
+    std::vector<Node> nodes_;
+    BaseLine base_;
+    std::vector<SpringState> states_;
+    bool changed_ = false;
+};
+
+} // namespace plastica

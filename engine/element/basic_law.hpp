@@ -1,0 +1,55 @@
+// The constitutive part of a co-rotational beam, in the element's basic (local) frame:
+// basic deformations e = [u_l, θ_i, θ_j] (chord stretch, end rotations relative to the chord)
+// to basic forces q = [N, M_i, M_j] (end moments, counter-clockwise positive) and their
+// tangent. Path-dependent laws follow the trial/commit protocol.
+#pragma once
+
+#include <Eigen/Dense>
+#include <memory>
+
+namespace plastica {
+
+enum class HingeState { elastic = 0, yielding = 1, plastic = 2, failed = 3 };
+
+// What a plastic hinge reports about one element end.
+struct HingeReport {
+    double utilisation = 0.0; // |M| / M_p(N): 0 elastic … 1 at capacity
+    HingeState state = HingeState::elastic;
+    double ei_ratio = 1.0;    // EI_T / EI of the end section
+    double ea_ratio = 1.0;    // EA_T / EA
+    int failed_fibres = 0;
+};
+
+class BasicLaw {
+public:
+    virtual ~BasicLaw() = default;
+    // Trial state for the basic deformations e; returns q and ∂q/∂e.
+    virtual void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) = 0;
+    virtual void commit() = 0;
+    virtual void revert() = 0;
+    virtual bool has_hinges() const { return false; }
+    virtual HingeReport hinge(int /*end*/) const { return {}; }
+    // Committed plastic part of the basic deformations (zero for an elastic law).
+    virtual Eigen::Vector3d plastic_deformation() const { return Eigen::Vector3d::Zero(); }
+    virtual std::unique_ptr<BasicLaw> clone() const = 0;
+};
+
+// Elastic Euler–Bernoulli beam: N = EA u_l / L0, M_i = EI/L0 (4θ_i + 2θ_j), M_j = EI/L0 (2θ_i + 4θ_j).
+Eigen::Matrix3d elastic_basic_stiffness(double EA, double EI, double L0);
+
+class ElasticLaw final : public BasicLaw {
+public:
+    ElasticLaw(double EA, double EI, double L0) : k_(elastic_basic_stiffness(EA, EI, L0)) {}
+    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
+        k = k_;
+        q = k_ * e;
+    }
+    void commit() override {}
+    void revert() override {}
+    std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<ElasticLaw>(*this); }
+
+private:
+    Eigen::Matrix3d k_;
+};
+
+} // namespace plastica

@@ -1,0 +1,58 @@
+// Two-node co-rotational beam-column in 2D (Crisfield 1991; Battini 2002). The chord carries a
+// local frame; the basic law sees only the deformational part of the motion. With c, s of the
+// current chord, r = [−c −s 0 c s 0]ᵀ and z = [s −c 0 −s c 0]ᵀ, the global tangent is
+//   K = Bᵀ k_b B + z zᵀ N / L + (r zᵀ + z rᵀ)(M_i + M_j) / L².
+// The rigid rotation is measured by atan2 from the initial chord and unwrapped against the
+// committed value, so a member may turn through any number of full circles.
+#pragma once
+
+#include "element/basic_law.hpp"
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+#include <memory>
+
+namespace plastica {
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+// End forces of a beam in its basic frame and the shear they imply.
+struct BeamForces {
+    double axial = 0.0;    // N, tension positive
+    double moment_i = 0.0; // sagging moment EI·dθ/ds at the first node
+    double moment_j = 0.0; // … at the second node
+    double shear = 0.0;    // (M_i + M_j)/L from the end moments
+};
+
+class CorotationalBeam {
+public:
+    CorotationalBeam(const Node& a, const Node& b, std::unique_ptr<BasicLaw> law);
+    CorotationalBeam(const CorotationalBeam& other);
+    CorotationalBeam& operator=(const CorotationalBeam&) = delete;
+    CorotationalBeam(CorotationalBeam&&) = default;
+
+    // Trial state from the global displacements d = [u_i v_i θ_i u_j v_j θ_j]; returns the
+    // internal force vector and, if asked, the tangent.
+    void compute(const Vector6& d, Vector6& force, Matrix6* tangent);
+    void commit();
+    void revert();
+
+    BeamForces forces() const;
+    const BasicLaw& law() const { return *law_; }
+    double initial_length() const { return L0_; }
+    double rigid_rotation() const { return alpha_trial_; }
+
+private:
+    double x0_, y0_, dx0_, dy0_;
+    double L0_, c0_, s0_;
+    std::unique_ptr<BasicLaw> law_;
+    double alpha_committed_ = 0.0;
+    double alpha_trial_ = 0.0;
+    double length_trial_ = 0.0;
+    Eigen::Vector3d q_trial_ = Eigen::Vector3d::Zero();
+    Eigen::Vector3d q_committed_ = Eigen::Vector3d::Zero();
+    double length_committed_ = 0.0;
+};
+
+} // namespace plastica

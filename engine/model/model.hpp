@@ -1,0 +1,129 @@
+// The structural model: what a scene file describes once it has been read and validated.
+// Plain data only; the analysis builds elements, sections and springs from it.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+inline constexpr int dofs_per_node = 3; // ux, uy, rotation (counter-clockwise)
+
+struct Node {
+    double x = 0.0;
+    double y = 0.0;
+};
+
+// Bilinear steel (seed eq. 6): elastic inside ±εy, ±fy up to ±εu, failed past εu.
+struct SteelSpec {
+    double E = 0.0;
+    double fy = 0.0;
+    double ultimate_strain = 0.0; // εu; 0 means "never fails"
+};
+
+struct Fibre {
+    double area = 0.0;
+    double y = 0.0;                 // distance from the reference axis, local +y side
+    double residual_stress = 0.0;   // initial stress (ECCS patterns and the like)
+};
+
+// A section carries elastic properties for the beam interior and, when the scene is
+// inelastic, a fibre discretisation used by the plastic hinges (Strain Compatibility Method).
+struct SectionSpec {
+    std::string name;
+    double E = 0.0;
+    double area = 0.0;
+    double inertia = 0.0;
+    std::optional<SteelSpec> steel; // present: inelastic section with fibres
+    std::vector<Fibre> fibres;      // filled when steel is present
+};
+
+struct ElementSpec {
+    int node_i = 0;
+    int node_j = 0;
+    int section = 0;
+};
+
+struct Support {
+    int node = 0;
+    std::array<bool, dofs_per_node> fixed{false, false, false};
+};
+
+struct NodalLoad {
+    int node = 0;
+    std::array<double, dofs_per_node> value{0.0, 0.0, 0.0}; // fx, fy, moment; scaled by λ
+};
+
+struct PrescribedDisplacement {
+    int node = 0;
+    int dof = 0;
+    double value = 0.0; // reference value, scaled by λ
+};
+
+// A straight rigid base: points x with (x - point)·normal < 0 penetrate it.
+struct BaseLine {
+    std::array<double, 2> point{0.0, 0.0};
+    std::array<double, 2> normal{0.0, 1.0};
+};
+
+// Discrete foundation spring at a node (seed eq. 5): Kb = diag(kx, ky, kθ). A unilateral
+// spring pushes along the base normal only, and only while the node touches the base.
+struct FoundationSpring {
+    int node = 0;
+    double kx = 0.0;
+    double ky = 0.0;
+    double krot = 0.0;
+    bool unilateral = false;
+};
+
+enum class Scheme { load_control, displacement_control, arc_length };
+
+struct DofRef {
+    int node = 0;
+    int dof = 1;
+    double sign = 1.0; // reported value = sign * displacement
+};
+
+struct AnalysisSpec {
+    Scheme scheme = Scheme::arc_length;
+    double initial_increment = 0.01; // Δλ, Δu of the control DOF, or arc length Δl
+    double min_increment = 1e-8;
+    double max_increment = 0.0;      // 0: no cap
+    int desired_iterations = 5;      // adapts increments toward this count
+    bool adaptive = true;
+    int max_iterations = 30;
+    int max_steps = 1000;
+    double residual_tolerance = 1e-6;     // ‖R‖ relative to the reference load
+    double displacement_tolerance = 1e-8; // ‖δu‖ relative to ‖Δu‖ of the step
+    std::optional<double> target_load_factor;
+    std::optional<double> target_displacement; // on the control DOF, signed as reported
+    DofRef control;                            // displacement control and reporting
+};
+
+struct ReportSpec {
+    double load_scale = 1.0; // reported load = load_scale * λ * ‖reference load‖ (symmetry)
+};
+
+struct Model {
+    std::string name;
+    std::string source; // the scene file it came from
+    std::vector<Node> nodes;
+    std::vector<SectionSpec> sections;
+    std::vector<ElementSpec> elements;
+    std::vector<Support> supports;
+    std::vector<NodalLoad> loads;
+    std::vector<PrescribedDisplacement> prescribed;
+    std::vector<FoundationSpring> springs;
+    std::optional<BaseLine> base; // required when any spring is unilateral
+    AnalysisSpec analysis;
+    ReportSpec report;
+
+    int dof_count() const { return dofs_per_node * static_cast<int>(nodes.size()); }
+    bool inelastic() const;
+    bool has_unilateral_base() const;
+    double reference_load_norm() const;
+};
+
+} // namespace plastica

@@ -1,0 +1,190 @@
+#include "section/fibre_section.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace plastica {
+
+FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
+    const SteelSpec& steel = *spec.steel;
+    E_ = steel.E;
+    for (const Fibre& f : spec.fibres) {
+        fibres_.push_back({f.area, f.y, steel.fy, f.residual_stress, BilinearSteel(steel, f.residual_stress)});
+        ea0_ += steel.E * f.area;
+        ei0_ += steel.E * f.area * f.y * f.y;
+        ny_tension_ += steel.fy * f.area;
+    }
+    ny_compression_ = ny_tension_;
+    force_scale_ = ny_tension_;
+    moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
+}
+
+SectionResponse FibreSection::set_trial_deformation(double eps0, double curvature) {
+    eps0_t_ = eps0;
+    phi_t_ = curvature;
+    SectionResponse r;
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0;
+    for (FibrePoint& f : fibres_) {
+        f.material.set_trial_strain(eps0 - f.y * curvature);
+        const double s = f.material.stress() * f.area;
+        const double t = f.material.tangent() * f.area;
+        r.N += s;
+        r.M -= s * f.y;
+        k11 += t;
+        k12 -= t * f.y;
+        k22 += t * f.y * f.y;
+    }
+    r.tangent << k11, k12, k12, k22;
+    return r;
+}
+
+ScmResult FibreSection::solve_for_forces(double N, double M, int max_iterations) {
+    ScmResult result;
+    const double sign = M >= 0.0 ? 1.0 : -1.0;
+    if (N >= ny_tension_ || N <= -ny_compression_ ||
+        std::abs(M) >= moment_capacity(N, sign) * (1.0 - 1e-12)) {
+        result.outcome = ScmOutcome::beyond_capacity;
+        return result;
+    }
+    Eigen::Vector2d x(eps0_c_, phi_c_);
+    const Eigen::Vector2d target(N, M);
+    const Eigen::Vector2d scale(force_scale_, moment_scale_);
+    SectionResponse r = set_trial_deformation(x[0], x[1]);
+    auto misfit = [&](const SectionResponse& s) {
+        return Eigen::Vector2d((target[0] - s.N) / scale[0], (target[1] - s.M) / scale[1]);
+    };
+    Eigen::Vector2d f = misfit(r);
+    for (int it = 0; it < max_iterations; ++it) {
+        result.iterations = it;
+        if (f.lpNorm<Eigen::Infinity>() < 1e-11) {
+            result.outcome = ScmOutcome::converged;
+            break;
+        }
+        const double det = r.tangent.determinant();
+        if (!(std::abs(det) > 1e-300)) break; // every fibre yielded: no unique deformation
+        const Eigen::Vector2d step = r.tangent.partialPivLu().solve(target - Eigen::Vector2d(r.N, r.M));
+        // Backtracking line search on the scaled misfit: the fibre law is piecewise linear,
+        // and a full step can jump across several yield kinks near the capacity curve.
+        double alpha = 1.0;
+        SectionResponse trial;
+        Eigen::Vector2d f_trial;
+        for (int ls = 0; ls < 30; ++ls) {
+            trial = set_trial_deformation(x[0] + alpha * step[0], x[1] + alpha * step[1]);
+            f_trial = misfit(trial);
+            if (f_trial.norm() < (1.0 - 1e-4 * alpha) * f.norm()) break;
+            alpha *= 0.5;
+        }
+        x += alpha * step;
+        r = trial;
+        f = f_trial;
+    }
+    if (result.outcome != ScmOutcome::converged && f.lpNorm<Eigen::Infinity>() < 1e-11)
+        result.outcome = ScmOutcome::converged;
+    set_trial_deformation(x[0], x[1]);
+    result.eps0 = x[0];
+    result.curvature = x[1];
+    result.response = r;
+    const double f11 = r.tangent(0, 0), f12 = r.tangent(0, 1), f22 = r.tangent(1, 1);
+    result.ea_tangent = f22 > 0.0 ? f11 - f12 * f12 / f22 : f11;
+    result.ei_tangent = f11 > 0.0 ? f22 - f12 * f12 / f11 : 0.0;
+    return result;
+}
+
+void FibreSection::commit() {
+    for (FibrePoint& f : fibres_) f.material.commit();
+    eps0_c_ = eps0_t_;
+    phi_c_ = phi_t_;
+}
+
+void FibreSection::revert() {
+    for (FibrePoint& f : fibres_) f.material.revert();
+    eps0_t_ = eps0_c_;
+    phi_t_ = phi_c_;
+}
+
+double FibreSection::moment_capacity(double N, double sign) const {
+    // Fully plastic state: with positive bending the fibres below the neutral axis are in
+    // tension (+fy) and those above in compression (−fy); the fibre the axis crosses carries
+    // whatever stress balances N. Fibres are scanned from the bottom.
+    if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
+    std::vector<std::size_t> order(fibres_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return fibres_[a].y < fibres_[b].y; });
+    const double below_sign = sign > 0.0 ? 1.0 : -1.0;
+    // N(k) with fibres [0, k) at below_sign·fy and (k, n) at −below_sign·fy, fibre k partial.
+    double below = 0.0;
+    double above = 0.0;
+    for (const FibrePoint& f : fibres_) above += f.fy * f.area;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const FibrePoint& fk = fibres_[order[k]];
+        above -= fk.fy * fk.area;
+        const double rest = N - below_sign * below + below_sign * above;
+        const double stress = rest / fk.area;
+        if (std::abs(stress) <= fk.fy * (1.0 + 1e-14)) {
+            double M = 0.0;
+            for (std::size_t m = 0; m < order.size(); ++m) {
+                const FibrePoint& f = fibres_[order[m]];
+                const double s = m < k ? below_sign * f.fy : (m == k ? stress : -below_sign * f.fy);
+                M -= s * f.area * f.y;
+            }
+            return std::abs(M);
+        }
+        below += fk.fy * fk.area;
+    }
+    return 0.0;
+}
+
+double FibreSection::first_yield_moment(double N) const {
+    // Elastic stresses σ = N·E/EA + M·E·y/EI (with M positive compressing +y) reach fy first at
+    // the fibre with the smallest margin; residual stresses are part of the initial stress.
+    double best = std::numeric_limits<double>::infinity();
+    const double E = E_;
+    for (const FibrePoint& f : fibres_) {
+        const double axial = N * E / ea0_ + f.residual_stress;
+        const double per_moment = -E * f.y / ei0_;
+        if (per_moment == 0.0) continue;
+        const double limit = per_moment > 0.0 ? (f.fy - axial) / per_moment : (-f.fy - axial) / per_moment;
+        best = std::min(best, limit);
+    }
+    return best;
+}
+
+std::vector<MomentCurvaturePoint> FibreSection::moment_curvature(double N, double max_curvature,
+                                                                 int points) const {
+    FibreSection virgin(spec_);
+    std::vector<MomentCurvaturePoint> curve;
+    double eps0 = 0.0;
+    for (int p = 0; p <= points; ++p) {
+        const double phi = max_curvature * p / points;
+        // Axial equilibrium at fixed curvature: N(ε0) is monotone, so safeguarded Newton.
+        double lo = -1.0, hi = 1.0;
+        for (int it = 0; it < 200; ++it) {
+            SectionResponse r = virgin.set_trial_deformation(eps0, phi);
+            const double g = r.N - N;
+            if (std::abs(g) < 1e-12 * force_scale_) break;
+            if (g > 0.0) hi = std::min(hi, eps0); else lo = std::max(lo, eps0);
+            double next = r.tangent(0, 0) > 0.0 ? eps0 - g / r.tangent(0, 0) : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            eps0 = next;
+        }
+        SectionResponse r = virgin.set_trial_deformation(eps0, phi);
+        virgin.commit();
+        curve.push_back({phi, r.M, eps0});
+    }
+    return curve;
+}
+
+int FibreSection::failed_fibres() const {
+    return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
+                                          [](const FibrePoint& f) { return f.material.failed(); }));
+}
+
+int FibreSection::yielded_fibres() const {
+    return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
+                                          [](const FibrePoint& f) { return f.material.yielding(); }));
+}
+
+} // namespace plastica

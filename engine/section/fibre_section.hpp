@@ -1,0 +1,88 @@
+// Fibre section solved by the Strain Compatibility Method (seed eqs. 7–11).
+// Plane sections: ε(y) = ε0 − y·Φ; resultants N = Σ σ A, M = −Σ σ y A (M = EI·Φ when elastic).
+// Given a target (N, M), Newton on X = [ε0, Φ] solves F(X) = f_ext − f_int(X) = 0 with the
+// Jacobian [∂N/∂ε0 ∂N/∂Φ; ∂M/∂ε0 ∂M/∂Φ]; the tangents are EA_T = f11 − f12 f21 / f22 and
+// EI_T = f22 − f12 f21 / f11. The capacity M_p(N) is the fully plastic limit of the fibres.
+#pragma once
+
+#include "material/bilinear_steel.hpp"
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace plastica {
+
+struct SectionResponse {
+    double N = 0.0;
+    double M = 0.0;
+    Eigen::Matrix2d tangent = Eigen::Matrix2d::Zero(); // ∂(N, M)/∂(ε0, Φ)
+};
+
+enum class ScmOutcome { converged, beyond_capacity, no_convergence };
+
+struct ScmResult {
+    ScmOutcome outcome = ScmOutcome::no_convergence;
+    int iterations = 0;
+    double eps0 = 0.0;
+    double curvature = 0.0;
+    double ea_tangent = 0.0;
+    double ei_tangent = 0.0;
+    SectionResponse response;
+};
+
+struct MomentCurvaturePoint {
+    double curvature = 0.0;
+    double moment = 0.0;
+    double eps0 = 0.0;
+};
+
+class FibreSection {
+public:
+    explicit FibreSection(const SectionSpec& spec);
+
+    // Trial state of every fibre from the section deformation; returns resultants and tangent.
+    SectionResponse set_trial_deformation(double eps0, double curvature);
+    // SCM: the deformation that carries (N, M), starting from the committed deformation.
+    ScmResult solve_for_forces(double N, double M, int max_iterations = 100);
+
+    void commit();
+    void revert();
+
+    // Fully plastic moment for axial force N, for positive (sign > 0) or negative bending.
+    double moment_capacity(double N, double sign) const;
+    double axial_capacity_tension() const { return ny_tension_; }
+    double axial_capacity_compression() const { return ny_compression_; }
+    double elastic_ea() const { return ea0_; }
+    double elastic_ei() const { return ei0_; }
+    // Moment at which the first fibre yields under axial force N (positive bending).
+    double first_yield_moment(double N) const;
+
+    // Monotonic M–κ curve at constant N from the virgin state, up to the given curvature.
+    std::vector<MomentCurvaturePoint> moment_curvature(double N, double max_curvature,
+                                                       int points) const;
+
+    int failed_fibres() const;
+    int yielded_fibres() const;
+    std::size_t fibre_count() const { return fibres_.size(); }
+    double committed_eps0() const { return eps0_c_; }
+    double committed_curvature() const { return phi_c_; }
+
+private:
+    struct FibrePoint {
+        double area;
+        double y;
+        double fy;
+        double residual_stress;
+        BilinearSteel material;
+    };
+    SectionSpec spec_; // kept to rebuild an unstressed copy
+    std::vector<FibrePoint> fibres_;
+    double E_ = 0.0;
+    double ea0_ = 0.0, ei0_ = 0.0;
+    double ny_tension_ = 0.0, ny_compression_ = 0.0;
+    double force_scale_ = 1.0, moment_scale_ = 1.0; // for convergence tests
+    double eps0_t_ = 0.0, phi_t_ = 0.0, eps0_c_ = 0.0, phi_c_ = 0.0;
+};
+
+} // namespace plastica

@@ -1,0 +1,609 @@
+#include "scene_reader.hpp"
+
+#include "toml_table_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace plastica {
+
+SectionSpec rectangle_section(double E, double b, double h, int fibres) {
+    SectionSpec s;
+    s.E = E;
+    s.area = b * h;
+    s.inertia = b * h * h * h / 12.0;
+    for (int i = 0; i < fibres; ++i)
+        s.fibres.push_back({b * h / fibres, -h / 2.0 + (i + 0.5) * h / fibres, 0.0});
+    return s;
+}
+
+namespace {
+
+struct Material {
+    double E = 0.0;
+    std::optional<SteelSpec> steel;
+};
+
+// I or H section: flanges split into strips across the width and layers through the
+// thickness (so a residual-stress pattern across the flange is represented), web in layers.
+SectionSpec i_section(TomlTableReader& t, const Material& m) {
+    const double d = t.positive("depth");
+    const double bf = t.positive("flange_width");
+    const double tf = t.positive("flange_thickness");
+    const double tw = t.positive("web_thickness");
+    if (2.0 * tf >= d) t.fail("flange_thickness", "two flanges must be thinner than the depth");
+    if (tw > bf) t.fail("web_thickness", "the web must not be wider than the flanges");
+    const int strips = t.integer_or("flange_strips", 10, 1, 1000);
+    const int layers = t.integer_or("flange_layers", 2, 1, 1000);
+    const int web = t.integer_or("web_fibres", 10, 1, 10000);
+    const double ratio = t.number_or("residual_stress", 0.0);
+    if (ratio < 0.0 || ratio >= 1.0) t.fail("residual_stress", "expected a fraction of fy in [0, 1)");
+    const double hw = d - 2.0 * tf;
+    SectionSpec s;
+    s.E = m.E;
+    s.area = 2.0 * bf * tf + hw * tw;
+    s.inertia = (bf * d * d * d - (bf - tw) * hw * hw * hw) / 12.0;
+    const double fy = m.steel ? m.steel->fy : 0.0;
+    for (int side : {-1, 1})
+        for (int l = 0; l < layers; ++l) {
+            const double y = side * (hw / 2.0 + (l + 0.5) * tf / layers);
+            for (int k = 0; k < strips; ++k) {
+                // ECCS-like linear pattern: compression at the tips, tension at the web,
+                // zero mean over the flange so that the section stays in equilibrium.
+                const double x = -bf / 2.0 + (k + 0.5) * bf / strips;
+                const double sigma = ratio * fy * (1.0 - 4.0 * std::abs(x) / bf);
+                s.fibres.push_back({bf * tf / (strips * layers), y, sigma});
+            }
+        }
+    for (int k = 0; k < web; ++k)
+        s.fibres.push_back({hw * tw / web, -hw / 2.0 + (k + 0.5) * hw / web, 0.0});
+    return s;
+}
+
+SectionSpec hollow_circle(TomlTableReader& t, const Material& m) {
+    const double D = t.positive("diameter");
+    const double th = t.positive("thickness");
+    if (2.0 * th > D) t.fail("thickness", "expected at most half the diameter");
+    const int n = t.integer_or("fibres", 24, 4, 100000);
+    SectionSpec s;
+    s.E = m.E;
+    const double d = D - 2.0 * th;
+    s.area = M_PI * (D * D - d * d) / 4.0;
+    s.inertia = M_PI * (D * D * D * D - d * d * d * d) / 64.0;
+    const double rm = (D - th) / 2.0;
+    for (int k = 0; k < n; ++k) s.fibres.push_back({s.area / n, rm * std::sin(2.0 * M_PI * (k + 0.5) / n), 0.0});
+    return s;
+}
+
+class SceneBuilder {
+public:
+    SceneBuilder(const toml::table& root, std::string file) : root_(root), file_(std::move(file)) {}
+
+    Model build() {
+        TomlTableReader top(root_, file_, "");
+        read_scene_table(top);
+        read_materials(top);
+        read_sections(top);
+        read_nodes(top);
+        read_lines(top);
+        read_arcs(top);
+        read_elements(top);
+        check_nodes(top);
+        read_supports(top);
+        read_loads(top);
+        read_prescribed(top);
+        read_foundations(top);
+        read_analysis(top);
+        read_report(top);
+        top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
+                    "load", "prescribed", "foundation", "analysis", "report", "render"});
+        if (model_.loads.empty() && model_.prescribed.empty())
+            throw SceneError(file_, 1, "load", "the scene has no [[load]] and no [[prescribed]] displacement");
+        return std::move(model_);
+    }
+
+private:
+    using Tables = std::vector<std::pair<const toml::table*, int>>;
+
+    Tables array_of_tables(TomlTableReader& top, const std::string& key) {
+        Tables out;
+        const toml::node* n = top.node(key);
+        if (!n) return out;
+        const toml::array* a = n->as_array();
+        if (!a || !a->is_array_of_tables())
+            top.fail(key, "expected an array of tables, written [[" + key + "]]");
+        for (const toml::node& item : *a) out.emplace_back(item.as_table(), line_of(item));
+        return out;
+    }
+
+    std::string indexed(const std::string& key, std::size_t i) const {
+        return key + "[" + std::to_string(i + 1) + "]";
+    }
+
+    void read_scene_table(TomlTableReader& top) {
+        const toml::table* t = top.table("scene");
+        if (!t) top.fail("", "missing required table [scene] (with a 'name')");
+        TomlTableReader r(*t, file_, "scene");
+        model_.name = r.string("name");
+        if (model_.name.empty() || model_.name.size() > 64 ||
+            !std::all_of(model_.name.begin(), model_.name.end(), [](char c) {
+                return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+            }))
+            r.fail("name", "expected 1 to 64 letters, digits, '_' or '-' (it names the output folder)");
+        r.string_or("title", "");
+        r.finish({"name", "title"});
+    }
+
+    void read_materials(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "material");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("material", i));
+            const std::string name = r.string("name");
+            if (materials_.count(name)) r.fail("name", "a material named '" + name + "' exists already");
+            Material m;
+            m.E = r.positive("E");
+            if (r.has("fy")) {
+                SteelSpec s;
+                s.E = m.E;
+                s.fy = r.positive("fy");
+                s.ultimate_strain = r.number_or("ultimate_strain", 0.0);
+                if (s.ultimate_strain < 0.0 || (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E))
+                    r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
+                m.steel = s;
+            }
+            r.finish({"name", "E", "fy", "ultimate_strain"});
+            materials_[name] = m;
+        }
+    }
+
+    void read_sections(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "section");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("section", i));
+            const std::string name = r.string("name");
+            if (section_index_.count(name)) r.fail("name", "a section named '" + name + "' exists already");
+            const std::string material = r.string("material");
+            auto m = materials_.find(material);
+            if (m == materials_.end()) r.fail("material", "no [[material]] named '" + material + "'");
+            const std::string shape = r.choice("shape", {"properties", "rectangle", "i", "hollow_circle", "fibres"}, "properties");
+            SectionSpec s;
+            if (shape == "properties") {
+                s.E = m->second.E;
+                s.area = r.positive("A");
+                s.inertia = r.positive("I");
+                if (m->second.steel) {
+                    // A and I alone define no fibres: an equivalent rectangle carries them.
+                    const double h = std::sqrt(12.0 * s.inertia / s.area);
+                    const int n = r.integer_or("fibres", 10, 2, 100000);
+                    SectionSpec rect = rectangle_section(s.E, s.area / h, h, n);
+                    s.fibres = rect.fibres;
+                }
+            } else if (shape == "rectangle") {
+                const double b = r.positive("b");
+                const double h = r.positive("h");
+                s = rectangle_section(m->second.E, b, h, r.integer_or("fibres", 10, 1, 100000));
+            } else if (shape == "i") {
+                s = i_section(r, m->second);
+            } else if (shape == "hollow_circle") {
+                s = hollow_circle(r, m->second);
+            } else {
+                s.E = m->second.E;
+                const toml::array* a = r.array("fibres");
+                if (!a || a->empty()) r.fail("fibres", "expected a list of [area, y] or [area, y, residual_stress]");
+                for (const toml::node& f : *a) {
+                    const toml::array* v = f.as_array();
+                    if (!v || v->size() < 2 || v->size() > 3 || !v->is_homogeneous(toml::node_type::none) ||
+                        !std::all_of(v->begin(), v->end(), [](const toml::node& x) { return x.is_number(); }))
+                        throw SceneError(file_, line_of(f), r.qualified("fibres"),
+                                         "expected [area, y] or [area, y, residual_stress] of numbers");
+                    Fibre fib{*(*v)[0].value<double>(), *(*v)[1].value<double>(),
+                              v->size() == 3 ? *(*v)[2].value<double>() : 0.0};
+                    if (!(fib.area > 0.0) || !std::isfinite(fib.y) || !std::isfinite(fib.residual_stress))
+                        throw SceneError(file_, line_of(f), r.qualified("fibres"), "expected a positive fibre area and finite values");
+                    s.fibres.push_back(fib);
+                }
+                double A = 0.0, Sy = 0.0, I = 0.0;
+                for (const Fibre& f : s.fibres) {
+                    A += f.area;
+                    Sy += f.area * f.y;
+                }
+                for (const Fibre& f : s.fibres) I += f.area * (f.y - Sy / A) * (f.y - Sy / A);
+                if (std::abs(Sy) > 1e-9 * A * std::sqrt(I / A))
+                    r.fail("fibres", "fibre y must be measured from the centroid (Σ A·y = 0)");
+                s.area = A;
+                s.inertia = I;
+                if (!(I > 0.0)) r.fail("fibres", "the fibres give no bending stiffness");
+            }
+            const bool plastic = r.boolean_or("plastic", m->second.steel.has_value());
+            if (plastic && !m->second.steel)
+                r.fail("plastic", "an inelastic section needs a material with 'fy'");
+            if (plastic) s.steel = m->second.steel;
+            else s.fibres.clear();
+            s.name = name;
+            r.finish({"name", "material", "shape", "A", "I", "b", "h", "fibres", "depth", "flange_width",
+                      "flange_thickness", "web_thickness", "flange_strips", "flange_layers", "web_fibres",
+                      "residual_stress", "diameter", "thickness", "plastic"});
+            section_index_[name] = static_cast<int>(model_.sections.size());
+            model_.sections.push_back(s);
+        }
+    }
+
+    int section_of(TomlTableReader& r) {
+        const std::string name = r.string("section");
+        auto it = section_index_.find(name);
+        if (it == section_index_.end()) r.fail("section", "no [[section]] named '" + name + "'");
+        return it->second;
+    }
+
+    // Adds a node, or returns the one already at that point (generators share their ends).
+    int add_node(double x, double y) {
+        for (std::size_t k = 0; k < model_.nodes.size(); ++k)
+            if (std::hypot(model_.nodes[k].x - x, model_.nodes[k].y - y) <= merge_tolerance(x, y))
+                return static_cast<int>(k);
+        model_.nodes.push_back({x, y});
+        return static_cast<int>(model_.nodes.size()) - 1;
+    }
+    double merge_tolerance(double x, double y) const {
+        return 1e-9 * std::max({1.0, std::abs(x), std::abs(y), size_scale_});
+    }
+
+    void add_element(int a, int b, int section, TomlTableReader& r, const std::string& key) {
+        if (a == b) r.fail(key, "an element's two nodes coincide");
+        if (static_cast<int>(model_.elements.size()) >= max_elements)
+            r.fail(key, "more than " + std::to_string(max_elements) + " elements");
+        model_.elements.push_back({a, b, section});
+    }
+
+    void read_nodes(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "node");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("node", i));
+            const int id = r.integer("id", 0, 1'000'000'000);
+            if (node_ids_.count(id)) r.fail("id", "node id " + std::to_string(id) + " is used twice");
+            const double x = r.number("x"), y = r.number("y");
+            for (const auto& [other, index] : node_ids_)
+                if (std::hypot(model_.nodes[index].x - x, model_.nodes[index].y - y) <= merge_tolerance(x, y))
+                    r.fail("id", "node " + std::to_string(id) + " lies on node " + std::to_string(other));
+            model_.nodes.push_back({x, y});
+            node_ids_[id] = static_cast<int>(model_.nodes.size()) - 1;
+            r.finish({"id", "x", "y"});
+        }
+    }
+
+    void read_lines(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "line");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("line", i));
+            const std::string name = r.string_or("name", "line" + std::to_string(i + 1));
+            const auto a = r.point("start");
+            const auto b = r.point("end");
+            const int n = r.integer("elements", 1, max_elements);
+            const int section = section_of(r);
+            if (std::hypot(b[0] - a[0], b[1] - a[1]) <= 0.0) r.fail("end", "a line needs a positive length (start and end coincide)");
+            size_scale_ = std::max({size_scale_, std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])});
+            std::vector<int>& nodes = groups_[name];
+            int prev = add_node(a[0], a[1]);
+            nodes.push_back(prev);
+            for (int k = 1; k <= n; ++k) {
+                const double t = static_cast<double>(k) / n;
+                const int next = add_node(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]));
+                add_element(prev, next, section, r, "elements");
+                nodes.push_back(next);
+                prev = next;
+            }
+            r.finish({"name", "start", "end", "elements", "section"});
+        }
+    }
+
+    void read_arcs(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "arc");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("arc", i));
+            const std::string name = r.string_or("name", "arc" + std::to_string(i + 1));
+            const auto c = r.point("center");
+            const double R = r.positive("radius");
+            const double a0 = r.number("start_angle");
+            const double a1 = r.number("end_angle");
+            const int n = r.integer("elements", 1, max_elements);
+            const int section = section_of(r);
+            const double sweep = a1 - a0;
+            if (std::abs(sweep) <= 0.0 || std::abs(sweep) > 360.0)
+                r.fail("end_angle", "expected an arc of more than 0 and at most 360 degrees");
+            size_scale_ = std::max({size_scale_, std::abs(c[0]) + R, std::abs(c[1]) + R});
+            std::vector<int>& nodes = groups_[name];
+            auto at = [&](int k) {
+                const double t = (a0 + sweep * k / n) * M_PI / 180.0;
+                return add_node(c[0] + R * std::cos(t), c[1] + R * std::sin(t));
+            };
+            int prev = at(0);
+            nodes.push_back(prev);
+            for (int k = 1; k <= n; ++k) {
+                const int next = at(k); // a full circle closes on its first node
+                add_element(prev, next, section, r, "elements");
+                if (next != nodes.front()) nodes.push_back(next);
+                prev = next;
+            }
+            r.finish({"name", "center", "radius", "start_angle", "end_angle", "elements", "section"});
+        }
+    }
+
+    int node_by_id(TomlTableReader& r, const std::string& key, int64_t id) {
+        auto it = node_ids_.find(static_cast<int>(id));
+        if (it == node_ids_.end()) r.fail(key, "no [[node]] with id " + std::to_string(id));
+        return it->second;
+    }
+
+    void read_elements(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "element");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("element", i));
+            const toml::array* a = r.array("nodes");
+            if (!a || a->size() != 2 || !(*a)[0].is_integer() || !(*a)[1].is_integer())
+                r.fail("nodes", "expected two node ids, e.g. nodes = [1, 2]");
+            const int n0 = node_by_id(r, "nodes", *(*a)[0].value<int64_t>());
+            const int n1 = node_by_id(r, "nodes", *(*a)[1].value<int64_t>());
+            add_element(n0, n1, section_of(r), r, "nodes");
+            r.finish({"nodes", "section"});
+        }
+    }
+
+    void check_nodes(TomlTableReader& top) {
+        if (model_.elements.empty()) top.fail("", "the scene has no elements ([[line]], [[arc]] or [[element]])");
+        std::vector<bool> used(model_.nodes.size(), false);
+        for (const ElementSpec& e : model_.elements) used[e.node_i] = used[e.node_j] = true;
+        for (const auto& [id, index] : node_ids_)
+            if (!used[index]) top.fail("node", "node " + std::to_string(id) + " belongs to no element");
+        double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+        for (const Node& n : model_.nodes) {
+            xmin = std::min(xmin, n.x); xmax = std::max(xmax, n.x);
+            ymin = std::min(ymin, n.y); ymax = std::max(ymax, n.y);
+        }
+        size_scale_ = std::max({size_scale_, xmax - xmin, ymax - ymin});
+    }
+
+    // A node named by 'node = id' or by 'at = [x, y]'.
+    int node_ref(TomlTableReader& r, const std::string& id_key = "node", const std::string& at_key = "at") {
+        if (r.has(id_key) && r.has(at_key)) r.fail(at_key, "give either '" + id_key + "' or '" + at_key + "', not both");
+        if (r.has(id_key)) return node_by_id(r, id_key, r.integer(id_key, 0, 1'000'000'000));
+        if (!r.has(at_key)) r.fail("", "missing '" + at_key + "' (a point [x, y]) or '" + id_key + "' (a node id)");
+        const auto p = r.point(at_key);
+        return node_at(r, at_key, p);
+    }
+    int node_at(TomlTableReader& r, const std::string& key, const std::array<double, 2>& p) {
+        for (std::size_t k = 0; k < model_.nodes.size(); ++k)
+            if (std::hypot(model_.nodes[k].x - p[0], model_.nodes[k].y - p[1]) <= 1e-6 * size_scale_)
+                return static_cast<int>(k);
+        std::ostringstream s;
+        s << "no node at [" << p[0] << ", " << p[1] << "]";
+        r.fail(key, s.str());
+    }
+
+    static int dof_index(TomlTableReader& r, const std::string& key, const std::string& name) {
+        if (name == "ux") return 0;
+        if (name == "uy") return 1;
+        if (name == "rz") return 2;
+        r.fail(key, "expected 'ux', 'uy' or 'rz', got '" + name + "'");
+    }
+
+    void read_supports(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "support");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("support", i));
+            Support s;
+            s.node = node_ref(r);
+            const toml::array* fix = r.array("fix");
+            if (!fix || fix->empty()) r.fail("fix", "expected a list of DOFs, e.g. fix = [\"ux\", \"uy\"]");
+            for (const toml::node& f : *fix) {
+                if (!f.is_string()) r.fail("fix", "expected DOF names 'ux', 'uy', 'rz'");
+                s.fixed[dof_index(r, "fix", *f.value<std::string>())] = true;
+            }
+            r.finish({"node", "at", "fix"});
+            model_.supports.push_back(s);
+        }
+    }
+
+    void read_loads(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "load");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("load", i));
+            NodalLoad l;
+            l.node = node_ref(r);
+            l.value = {r.number_or("fx", 0.0), r.number_or("fy", 0.0), r.number_or("moment", 0.0)};
+            if (l.value[0] == 0.0 && l.value[1] == 0.0 && l.value[2] == 0.0)
+                r.fail("", "a load needs a non-zero 'fx', 'fy' or 'moment'");
+            r.finish({"node", "at", "fx", "fy", "moment"});
+            model_.loads.push_back(l);
+        }
+    }
+
+    void read_prescribed(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "prescribed");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("prescribed", i));
+            PrescribedDisplacement p;
+            p.node = node_ref(r);
+            p.dof = dof_index(r, "dof", r.string("dof"));
+            p.value = r.number("value");
+            r.finish({"node", "at", "dof", "value"});
+            model_.prescribed.push_back(p);
+        }
+    }
+
+    void read_foundations(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "foundation");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("foundation", i));
+            const bool unilateral = r.choice("kind", {"unilateral", "bilateral"}, "bilateral") == "unilateral";
+            std::vector<int> nodes;
+            const std::string on = r.string_or("on", "");
+            if (!on.empty()) {
+                if (on == "all") {
+                    for (std::size_t k = 0; k < model_.nodes.size(); ++k) nodes.push_back(static_cast<int>(k));
+                } else {
+                    auto g = groups_.find(on);
+                    if (g == groups_.end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
+                    nodes = g->second;
+                }
+            }
+            if (const toml::array* a = r.array("at")) {
+                for (const toml::node& p : *a) {
+                    const toml::array* xy = p.as_array();
+                    if (!xy || xy->size() != 2 || !(*xy)[0].is_number() || !(*xy)[1].is_number())
+                        r.fail("at", "expected a list of points [[x, y], …]");
+                    nodes.push_back(node_at(r, "at", {*(*xy)[0].value<double>(), *(*xy)[1].value<double>()}));
+                }
+            }
+            if (nodes.empty()) r.fail("on", "a foundation needs nodes: 'on' (\"all\" or a generator name) or 'at'");
+            std::vector<double> scale(model_.nodes.size(), 1.0);
+            if (const toml::array* a = r.array("halve_at")) {
+                for (const toml::node& p : *a) {
+                    const toml::array* xy = p.as_array();
+                    if (!xy || xy->size() != 2 || !(*xy)[0].is_number() || !(*xy)[1].is_number())
+                        r.fail("halve_at", "expected a list of points [[x, y], …]");
+                    scale[node_at(r, "halve_at", {*(*xy)[0].value<double>(), *(*xy)[1].value<double>()})] = 0.5;
+                }
+            }
+            const double kx = r.number_or("kx", 0.0), ky = r.number_or("ky", 0.0), kr = r.number_or("krot", 0.0);
+            for (const auto& [key, v] : {std::pair{"kx", kx}, std::pair{"ky", ky}, std::pair{"krot", kr}})
+                if (v < 0.0) r.fail(key, "expected a stiffness ≥ 0");
+            if (unilateral && !(ky > 0.0)) r.fail("ky", "a unilateral base needs a positive normal stiffness 'ky'");
+            if (!unilateral && kx == 0.0 && ky == 0.0 && kr == 0.0) r.fail("ky", "a foundation needs a positive kx, ky or krot");
+            const bool per_length = r.boolean_or("per_length", false);
+            std::vector<double> tributary(model_.nodes.size(), 1.0);
+            if (per_length) {
+                std::fill(tributary.begin(), tributary.end(), 0.0);
+                for (const ElementSpec& e : model_.elements) {
+                    const double L = std::hypot(model_.nodes[e.node_j].x - model_.nodes[e.node_i].x,
+                                                model_.nodes[e.node_j].y - model_.nodes[e.node_i].y);
+                    tributary[e.node_i] += L / 2.0;
+                    tributary[e.node_j] += L / 2.0;
+                }
+            }
+            if (unilateral) {
+                BaseLine base;
+                double lowest = 1e300;
+                for (int n : nodes) lowest = std::min(lowest, model_.nodes[n].y);
+                base.point = r.has("base_point") ? r.point("base_point") : std::array<double, 2>{0.0, lowest};
+                base.normal = r.has("base_normal") ? r.point("base_normal") : std::array<double, 2>{0.0, 1.0};
+                const double nn = std::hypot(base.normal[0], base.normal[1]);
+                if (!(nn > 0.0)) r.fail("base_normal", "expected a non-zero vector");
+                base.normal = {base.normal[0] / nn, base.normal[1] / nn};
+                if (model_.base && (model_.base->point != base.point || model_.base->normal != base.normal))
+                    r.fail("base_point", "all unilateral foundations must share one base line");
+                model_.base = base;
+                std::string inside;
+                for (int n : nodes) {
+                    const double gap = (model_.nodes[n].x - base.point[0]) * base.normal[0] +
+                                       (model_.nodes[n].y - base.point[1]) * base.normal[1];
+                    if (gap < -1e-9 * size_scale_) inside += (inside.empty() ? "" : ", ") + describe_node(n);
+                }
+                if (!inside.empty()) r.fail("base_point", "the structure already penetrates the base at " + inside);
+            } else {
+                if (r.has("base_point") || r.has("base_normal"))
+                    r.fail(r.has("base_point") ? "base_point" : "base_normal",
+                           "a base line belongs to a unilateral foundation (kind = \"unilateral\")");
+            }
+            for (int n : nodes) {
+                FoundationSpring s;
+                s.node = n;
+                const double f = scale[n] * tributary[n];
+                s.kx = kx * f; s.ky = ky * f; s.krot = kr * f;
+                s.unilateral = unilateral;
+                model_.springs.push_back(s);
+            }
+            r.finish({"kind", "on", "at", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal"});
+        }
+    }
+
+    std::string describe_node(int n) const {
+        std::ostringstream s;
+        s << "[" << model_.nodes[n].x << ", " << model_.nodes[n].y << "]";
+        return s.str();
+    }
+
+    void read_analysis(TomlTableReader& top) {
+        const toml::table* t = top.table("analysis");
+        if (!t) top.fail("", "missing required table [analysis]");
+        TomlTableReader r(*t, file_, "analysis");
+        AnalysisSpec& a = model_.analysis;
+        const std::string scheme = r.choice("scheme", {"arc_length", "load_control", "displacement_control"}, "arc_length");
+        a.scheme = scheme == "arc_length" ? Scheme::arc_length
+                 : scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
+        a.initial_increment = r.positive("increment");
+        a.min_increment = r.positive_or("min_increment", a.initial_increment * 1e-6);
+        a.max_increment = r.positive_or("max_increment", 0.0 + a.initial_increment * 10.0);
+        a.adaptive = r.boolean_or("adaptive", a.scheme != Scheme::load_control);
+        a.desired_iterations = r.integer_or("desired_iterations", 5, 1, 100);
+        a.max_iterations = r.integer_or("max_iterations", 30, 1, 1000);
+        a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
+        a.residual_tolerance = r.positive_or("residual_tolerance", 1e-6);
+        a.displacement_tolerance = r.positive_or("displacement_tolerance", 1e-6);
+        if (r.has("target_load_factor")) a.target_load_factor = r.number("target_load_factor");
+        if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement");
+        if (r.has("control_at") || r.has("control_node")) {
+            a.control.node = node_ref(r, "control_node", "control_at");
+            a.control.dof = dof_index(r, "control_dof", r.string_or("control_dof", "uy"));
+            a.control.sign = r.number_or("control_sign", 1.0) < 0.0 ? -1.0 : 1.0;
+        } else if (a.scheme == Scheme::displacement_control || a.target_displacement) {
+            r.fail("", "missing 'control_at' (the point whose displacement controls or stops the analysis)");
+        } else if (!model_.loads.empty()) {
+            a.control.node = model_.loads.front().node; // report the first load's point
+            a.control.dof = 1;
+        }
+        if (!a.target_load_factor && !a.target_displacement)
+            r.fail("", "missing a stop: 'target_load_factor' or 'target_displacement'");
+        for (const Support& s : model_.supports)
+            if (a.scheme == Scheme::displacement_control && s.node == a.control.node && s.fixed[a.control.dof])
+                r.fail("control_dof", "the controlled DOF is supported");
+        r.finish({"scheme", "increment", "min_increment", "max_increment", "adaptive", "desired_iterations",
+                  "max_iterations", "max_steps", "residual_tolerance", "displacement_tolerance",
+                  "target_load_factor", "target_displacement", "control_at", "control_node", "control_dof",
+                  "control_sign"});
+    }
+
+    void read_report(TomlTableReader& top) {
+        const toml::table* t = top.table("report");
+        if (!t) return;
+        TomlTableReader r(*t, file_, "report");
+        model_.report.load_scale = r.positive_or("load_scale", 1.0);
+        r.finish({"load_scale"});
+    }
+
+    const toml::table& root_;
+    std::string file_;
+    Model model_;
+    std::map<std::string, Material> materials_;
+    std::map<std::string, int> section_index_;
+    std::map<int, int> node_ids_;
+    std::map<std::string, std::vector<int>> groups_;
+    double size_scale_ = 0.0;
+};
+
+} // namespace
+
+Model read_scene_text(const std::string& text, const std::string& name_for_errors) {
+    toml::table root;
+    try {
+        root = toml::parse(text, name_for_errors);
+    } catch (const toml::parse_error& e) {
+        throw SceneError(name_for_errors, static_cast<int>(e.source().begin.line), "",
+                         std::string(e.description()));
+    }
+    Model m = SceneBuilder(root, name_for_errors).build();
+    m.source = name_for_errors;
+    return m;
+}
+
+Model read_scene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path, 0, "", "cannot open the scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return read_scene_text(text.str(), path);
+}
+
+} // namespace plastica

@@ -1,0 +1,183 @@
+#include "toml_table_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace plastica {
+
+int line_of(const toml::node& node) {
+    return static_cast<int>(node.source().begin.line);
+}
+
+std::string nearest_key(const std::string& key, const std::vector<std::string>& candidates) {
+    // Levenshtein distance; a suggestion is made only for a plausible misspelling.
+    auto distance = [](const std::string& a, const std::string& b) {
+        std::vector<std::size_t> row(b.size() + 1);
+        for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+        for (std::size_t i = 1; i <= a.size(); ++i) {
+            std::size_t diag = row[0];
+            row[0] = i;
+            for (std::size_t j = 1; j <= b.size(); ++j) {
+                const std::size_t up = row[j];
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+                diag = up;
+            }
+        }
+        return row[b.size()];
+    };
+    std::string best;
+    std::size_t best_distance = 3;
+    for (const std::string& c : candidates) {
+        const std::size_t d = distance(key, c);
+        if (d < best_distance) {
+            best_distance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+TomlTableReader::TomlTableReader(const toml::table& table, std::string file, std::string path)
+    : table_(table), file_(std::move(file)), path_(std::move(path)),
+      line_(plastica::line_of(static_cast<const toml::node&>(table))) {}
+
+bool TomlTableReader::has(const std::string& key) const { return table_.contains(key); }
+
+int TomlTableReader::line_of(const std::string& key) const {
+    const toml::node* n = table_.get(key);
+    return n ? plastica::line_of(*n) : line_;
+}
+
+std::string TomlTableReader::qualified(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+}
+
+void TomlTableReader::fail(const std::string& key, const std::string& what) const {
+    throw SceneError(file_, key.empty() ? line_ : line_of(key), key.empty() ? path_ : qualified(key), what);
+}
+
+const toml::node* TomlTableReader::node(const std::string& key) {
+    used_.insert(key);
+    return table_.get(key);
+}
+
+double TomlTableReader::number(const std::string& key) {
+    const toml::node* n = node(key);
+    if (!n) fail("", "missing required key '" + key + "' (a number)");
+    std::optional<double> v = n->value<double>();
+    if (!v || !(n->is_number())) fail(key, "expected a number");
+    if (!std::isfinite(*v)) fail(key, "expected a finite number, got " + std::to_string(*v));
+    return *v;
+}
+
+double TomlTableReader::positive(const std::string& key) {
+    const double v = number(key);
+    if (!(v > 0.0)) {
+        std::ostringstream s;
+        s << "expected a positive number, got " << v;
+        fail(key, s.str());
+    }
+    return v;
+}
+
+std::optional<double> TomlTableReader::optional_number(const std::string& key) {
+    if (!has(key)) {
+        used_.insert(key);
+        return std::nullopt;
+    }
+    return number(key);
+}
+
+double TomlTableReader::number_or(const std::string& key, double fallback) {
+    return has(key) ? number(key) : (used_.insert(key), fallback);
+}
+
+double TomlTableReader::positive_or(const std::string& key, double fallback) {
+    return has(key) ? positive(key) : (used_.insert(key), fallback);
+}
+
+int TomlTableReader::integer(const std::string& key, int min, int max) {
+    const toml::node* n = node(key);
+    if (!n) fail("", "missing required key '" + key + "' (a whole number)");
+    if (!n->is_integer()) fail(key, "expected a whole number");
+    const int64_t v = *n->value<int64_t>();
+    if (v < min || v > max)
+        fail(key, "expected a whole number from " + std::to_string(min) + " to " +
+                      std::to_string(max) + ", got " + std::to_string(v));
+    return static_cast<int>(v);
+}
+
+int TomlTableReader::integer_or(const std::string& key, int fallback, int min, int max) {
+    return has(key) ? integer(key, min, max) : (used_.insert(key), fallback);
+}
+
+bool TomlTableReader::boolean_or(const std::string& key, bool fallback) {
+    if (!has(key)) {
+        used_.insert(key);
+        return fallback;
+    }
+    const toml::node* n = node(key);
+    if (!n->is_boolean()) fail(key, "expected true or false");
+    return *n->value<bool>();
+}
+
+std::string TomlTableReader::string(const std::string& key) {
+    const toml::node* n = node(key);
+    if (!n) fail("", "missing required key '" + key + "' (a string)");
+    if (!n->is_string()) fail(key, "expected a string");
+    return *n->value<std::string>();
+}
+
+std::string TomlTableReader::string_or(const std::string& key, const std::string& fallback) {
+    return has(key) ? string(key) : (used_.insert(key), fallback);
+}
+
+std::string TomlTableReader::choice(const std::string& key, std::initializer_list<const char*> options,
+                                    const std::string& fallback) {
+    const std::string v = string_or(key, fallback);
+    std::string list;
+    for (const char* o : options) {
+        if (v == o) return v;
+        list += list.empty() ? std::string("'") + o + "'" : std::string(", '") + o + "'";
+    }
+    fail(key, "expected one of " + list + ", got '" + v + "'");
+}
+
+std::array<double, 2> TomlTableReader::point(const std::string& key) {
+    const toml::node* n = node(key);
+    if (!n) fail("", "missing required key '" + key + "' (a point [x, y])");
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
+        fail(key, "expected a point [x, y] of two numbers");
+    std::array<double, 2> p{*(*a)[0].value<double>(), *(*a)[1].value<double>()};
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1])) fail(key, "expected finite coordinates");
+    return p;
+}
+
+const toml::table* TomlTableReader::table(const std::string& key) {
+    const toml::node* n = node(key);
+    if (!n) return nullptr;
+    if (!n->is_table()) fail(key, "expected a table");
+    return n->as_table();
+}
+
+const toml::array* TomlTableReader::array(const std::string& key) {
+    const toml::node* n = node(key);
+    if (!n) return nullptr;
+    if (!n->is_array()) fail(key, "expected an array");
+    return n->as_array();
+}
+
+void TomlTableReader::finish(std::initializer_list<const char*> known_keys) const {
+    std::vector<std::string> known(known_keys.begin(), known_keys.end());
+    for (auto&& [k, v] : table_) {
+        const std::string key(k.str());
+        if (used_.count(key) || std::find(known.begin(), known.end(), key) != known.end()) continue;
+        const std::string near = nearest_key(key, known);
+        throw SceneError(file_, plastica::line_of(v), qualified(key),
+                         "unknown key" + (near.empty() ? std::string() : "; did you mean '" + near + "'?"));
+    }
+}
+
+} // namespace plastica

@@ -1,0 +1,61 @@
+// Reads one TOML table with located errors: typed, range-checked values, and at the end a
+// check that every key was known (with the nearest valid key as a suggestion).
+#pragma once
+
+#include "scene_error.hpp"
+
+#include <toml++/toml.h>
+
+#include <array>
+#include <initializer_list>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+class TomlTableReader {
+public:
+    TomlTableReader(const toml::table& table, std::string file, std::string path);
+
+    bool has(const std::string& key) const;
+    int line_of(const std::string& key) const;
+    int line() const { return line_; }
+    const std::string& file() const { return file_; }
+    std::string qualified(const std::string& key) const;
+
+    double number(const std::string& key);                     // required, finite
+    double positive(const std::string& key);                   // required, > 0
+    std::optional<double> optional_number(const std::string& key);
+    double number_or(const std::string& key, double fallback);
+    double positive_or(const std::string& key, double fallback);
+    int integer(const std::string& key, int min, int max);
+    int integer_or(const std::string& key, int fallback, int min, int max);
+    bool boolean_or(const std::string& key, bool fallback);
+    std::string string(const std::string& key);
+    std::string string_or(const std::string& key, const std::string& fallback);
+    std::string choice(const std::string& key, std::initializer_list<const char*> options,
+                       const std::string& fallback);
+    std::array<double, 2> point(const std::string& key);
+    const toml::node* node(const std::string& key);            // marks the key as used
+    const toml::table* table(const std::string& key);
+    const toml::array* array(const std::string& key);
+
+    // Throws for the first key that was never read.
+    void finish(std::initializer_list<const char*> known_keys) const;
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+private:
+    const toml::table& table_;
+    std::string file_;
+    std::string path_;
+    int line_;
+    std::set<std::string> used_;
+};
+
+int line_of(const toml::node& node);
+std::string nearest_key(const std::string& key, const std::vector<std::string>& candidates);
+
+} // namespace plastica

@@ -1,0 +1,330 @@
+#include "vtu_series_writer.hpp"
+
+#include "atomic_file.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace plastica {
+
+namespace fs = std::filesystem;
+
+std::string step_file_name(int step) {
+    char name[32];
+    std::snprintf(name, sizeof name, "step_%06d.vtu", step);
+    return name;
+}
+
+namespace {
+
+bool has_bilateral(const Model& m) {
+    return std::any_of(m.springs.begin(), m.springs.end(), [](const FoundationSpring& s) { return !s.unilateral; });
+}
+
+vtkSmartPointer<vtkDoubleArray> make_array(const char* name, int components, vtkIdType tuples) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(tuples);
+    std::fill_n(a->GetPointer(0), tuples * components, 0.0); // vtkDataArray::Fill starts threads
+    return a;
+}
+
+void add_field(vtkFieldData* fd, const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfTuples(1);
+    a->SetValue(0, value);
+    fd->AddArray(a);
+}
+
+// VTK's writer makes hundreds of small writes and seeks per file; it writes into memory
+// here, and the file goes out in one piece under a temporary name, then is renamed.
+template <class Writer>
+void write_xml(Writer* writer, const std::string& path) {
+    writer->WriteToOutputStringOn();
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToZLib();
+    if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + path);
+    write_file_atomically(path, writer->GetOutputString());
+}
+
+} // namespace
+
+struct VtuSeriesWriter::Impl {
+    vtkNew<vtkUnstructuredGrid> grid;
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+};
+
+std::vector<std::string> VtuSeriesWriter::point_arrays(const Model& m) {
+    std::vector<std::string> names{"displacement", "rotation", "initial_position", "bending_moment"};
+    if (has_bilateral(m)) names.push_back("spring_force");
+    if (m.has_unilateral_base()) {
+        names.push_back("contact_force");
+        names.push_back("gap");
+        names.push_back("contact");
+    }
+    if (m.inelastic()) {
+        names.push_back("plastic_utilisation");
+        names.push_back("hinge_state");
+    }
+    return names;
+}
+
+std::vector<std::string> VtuSeriesWriter::cell_arrays(const Model& m) {
+    std::vector<std::string> names{"axial_force", "moment_i", "moment_j", "shear"};
+    if (m.inelastic()) {
+        names.push_back("ei_ratio");
+        names.push_back("utilisation_i");
+        names.push_back("utilisation_j");
+    }
+    return names;
+}
+
+VtuSeriesWriter::VtuSeriesWriter(const Model& model, const std::string& directory, SeriesOptions options)
+    : impl_(std::make_unique<Impl>()), model_(&model), directory_(directory),
+      pvd_path_((fs::path(directory) / (model.name + ".pvd")).string()), options_(options) {
+    if (options_.every < 1) options_.every = 1;
+    // The writer computes array ranges with vtkSMPTools; for arrays of a few hundred values a
+    // thread pool costs far more than it saves.
+    vtkSMPTools::SetBackend("Sequential");
+    fs::create_directories(fs::path(directory) / "vtu");
+    vtkNew<vtkCellArray> lines;
+    for (const ElementSpec& e : model.elements) {
+        const vtkIdType ids[2] = {e.node_i, e.node_j};
+        lines->InsertNextCell(2, ids);
+    }
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(model.nodes.size()));
+    impl_->grid->SetPoints(points);
+    impl_->grid->SetCells(VTK_LINE, lines);
+    impl_->writer->SetInputData(impl_->grid);
+    write_base();
+}
+
+VtuSeriesWriter::~VtuSeriesWriter() = default;
+VtuSeriesWriter::VtuSeriesWriter(VtuSeriesWriter&&) noexcept = default;
+
+void VtuSeriesWriter::operator()(const StepResult& r) {
+    if (r.step == 0 || r.step % options_.every == 0) {
+        write_step(r);
+        pending_.reset();
+    } else {
+        pending_ = r;
+    }
+}
+
+void VtuSeriesWriter::finish() {
+    if (pending_) write_step(*pending_);
+    pending_.reset();
+}
+
+void VtuSeriesWriter::write_step(const StepResult& r) {
+    const Model& m = *model_;
+    const vtkIdType n = static_cast<vtkIdType>(m.nodes.size());
+    const vtkIdType ne = static_cast<vtkIdType>(m.elements.size());
+    vtkUnstructuredGrid* grid = impl_->grid;
+    vtkPoints* points = grid->GetPoints();
+    auto displacement = make_array("displacement", 3, n);
+    auto rotation = make_array("rotation", 1, n);
+    auto initial = make_array("initial_position", 3, n);
+    for (vtkIdType i = 0; i < n; ++i) {
+        const double ux = r.displacement[3 * i], uy = r.displacement[3 * i + 1];
+        points->SetPoint(i, m.nodes[i].x + ux, m.nodes[i].y + uy, 0.0);
+        displacement->SetTuple3(i, ux, uy, 0.0);
+        rotation->SetValue(i, r.displacement[3 * i + 2]);
+        initial->SetTuple3(i, m.nodes[i].x, m.nodes[i].y, 0.0);
+    }
+    points->Modified();
+
+    vtkPointData* pd = grid->GetPointData();
+    pd->Initialize();
+    pd->AddArray(displacement);
+    pd->SetActiveVectors("displacement");
+    pd->AddArray(rotation);
+    pd->AddArray(initial);
+
+    // Nodal bending moment: the mean of the element-end moments meeting at the node.
+    auto moment = make_array("bending_moment", 1, n);
+    std::vector<int> count(n, 0);
+    vtkCellData* cd = grid->GetCellData();
+    cd->Initialize();
+    auto axial = make_array("axial_force", 1, ne);
+    auto mi = make_array("moment_i", 1, ne);
+    auto mj = make_array("moment_j", 1, ne);
+    auto shear = make_array("shear", 1, ne);
+    for (vtkIdType e = 0; e < ne; ++e) {
+        const BeamForces& f = r.elements[e].forces;
+        axial->SetValue(e, f.axial);
+        mi->SetValue(e, f.moment_i);
+        mj->SetValue(e, f.moment_j);
+        shear->SetValue(e, f.shear);
+        const ElementSpec& spec = m.elements[e];
+        moment->SetValue(spec.node_i, moment->GetValue(spec.node_i) + f.moment_i);
+        moment->SetValue(spec.node_j, moment->GetValue(spec.node_j) + f.moment_j);
+        ++count[spec.node_i];
+        ++count[spec.node_j];
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+        if (count[i] > 0) moment->SetValue(i, moment->GetValue(i) / count[i]);
+    pd->AddArray(moment);
+    cd->AddArray(axial);
+    cd->AddArray(mi);
+    cd->AddArray(mj);
+    cd->AddArray(shear);
+
+    if (has_bilateral(m)) {
+        auto spring = make_array("spring_force", 3, n);
+        for (const SpringResult& s : r.springs)
+            if (!s.unilateral) spring->SetTuple3(s.node, s.force[0], s.force[1], s.force[2]);
+        pd->AddArray(spring);
+    }
+    if (m.has_unilateral_base()) {
+        auto contact = make_array("contact_force", 3, n);
+        auto gap = make_array("gap", 1, n);
+        vtkNew<vtkIntArray> state;
+        state->SetName("contact");
+        state->SetNumberOfTuples(n);
+        std::fill_n(state->GetPointer(0), n, 0);
+        for (const SpringResult& s : r.springs) {
+            if (!s.unilateral) continue;
+            contact->SetTuple3(s.node, s.force[0], s.force[1], 0.0);
+            gap->SetValue(s.node, s.gap);
+            state->SetValue(s.node, s.active ? 1 : 0);
+        }
+        pd->AddArray(contact);
+        pd->AddArray(gap);
+        pd->AddArray(state);
+    }
+    if (m.inelastic()) {
+        auto util = make_array("plastic_utilisation", 1, n);
+        vtkNew<vtkIntArray> hinge;
+        hinge->SetName("hinge_state");
+        hinge->SetNumberOfTuples(n);
+        std::fill_n(hinge->GetPointer(0), n, 0);
+        auto ei = make_array("ei_ratio", 1, ne);
+        auto ui = make_array("utilisation_i", 1, ne);
+        auto uj = make_array("utilisation_j", 1, ne);
+        for (vtkIdType e = 0; e < ne; ++e) {
+            const ElementResult& er = r.elements[e];
+            if (!er.hinged) {
+                ei->SetValue(e, 1.0);
+                continue;
+            }
+            ei->SetValue(e, std::min(er.hinge[0].ei_ratio, er.hinge[1].ei_ratio));
+            ui->SetValue(e, er.hinge[0].utilisation);
+            uj->SetValue(e, er.hinge[1].utilisation);
+            const int nodes[2] = {m.elements[e].node_i, m.elements[e].node_j};
+            for (int end = 0; end < 2; ++end) {
+                util->SetValue(nodes[end], std::max(util->GetValue(nodes[end]), er.hinge[end].utilisation));
+                hinge->SetValue(nodes[end], std::max(hinge->GetValue(nodes[end]), static_cast<int>(er.hinge[end].state)));
+            }
+        }
+        pd->AddArray(util);
+        pd->AddArray(hinge);
+        cd->AddArray(ei);
+        cd->AddArray(ui);
+        cd->AddArray(uj);
+    }
+
+    const double time = options_.time == SeriesTime::step ? static_cast<double>(r.step) : r.arc_length;
+    vtkFieldData* fd = grid->GetFieldData();
+    fd->Initialize();
+    add_field(fd, "TimeValue", time);
+    add_field(fd, "load_factor", r.load_factor);
+    add_field(fd, "load", r.load);
+    add_field(fd, "control_displacement", r.control_displacement);
+    add_field(fd, "step", r.step);
+    add_field(fd, "iterations", r.iterations);
+    add_field(fd, "contact_count", r.contact_count);
+    add_field(fd, "hinge_count", r.hinge_count);
+    vtkNew<vtkStringArray> scene;
+    scene->SetName("scene");
+    scene->InsertNextValue(m.name);
+    fd->AddArray(scene);
+    grid->Modified();
+
+    const std::string name = step_file_name(r.step);
+    write_xml(impl_->writer.Get(), (fs::path(directory_) / "vtu" / name).string());
+    entries_.emplace_back(time, "vtu/" + name);
+    write_pvd();
+}
+
+void VtuSeriesWriter::write_base() {
+    const Model& m = *model_;
+    if (m.springs.empty()) return;
+    vtkNew<vtkPolyData> poly;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> lines, verts;
+    vtkNew<vtkIntArray> kind; // 0 spring anchor, 1 rigid base
+    kind->SetName("kind");
+    for (const FoundationSpring& s : m.springs) {
+        if (s.unilateral) continue;
+        const vtkIdType id = points->InsertNextPoint(m.nodes[s.node].x, m.nodes[s.node].y, 0.0);
+        verts->InsertNextCell(1, &id);
+    }
+    if (m.base) {
+        // The rigid line, long enough for a structure that spreads over it: twice the
+        // structure's extent on either side of its centre.
+        double lo = 1e300, hi = -1e300;
+        const double tx = -m.base->normal[1], ty = m.base->normal[0];
+        for (const Node& nd : m.nodes) {
+            const double t = (nd.x - m.base->point[0]) * tx + (nd.y - m.base->point[1]) * ty;
+            lo = std::min(lo, t);
+            hi = std::max(hi, t);
+        }
+        const double mid = 0.5 * (lo + hi), half = std::max(hi - lo, 1e-12);
+        const vtkIdType a = points->InsertNextPoint(m.base->point[0] + (mid - 2 * half) * tx, m.base->point[1] + (mid - 2 * half) * ty, 0.0);
+        const vtkIdType b = points->InsertNextPoint(m.base->point[0] + (mid + 2 * half) * tx, m.base->point[1] + (mid + 2 * half) * ty, 0.0);
+        const vtkIdType ids[2] = {a, b};
+        lines->InsertNextCell(2, ids);
+    }
+    poly->SetPoints(points);
+    poly->SetVerts(verts);
+    poly->SetLines(lines);
+    for (vtkIdType i = 0; i < verts->GetNumberOfCells(); ++i) kind->InsertNextValue(0);
+    for (vtkIdType i = 0; i < lines->GetNumberOfCells(); ++i) kind->InsertNextValue(1);
+    poly->GetCellData()->AddArray(kind);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(poly);
+    write_xml(writer.Get(), (fs::path(directory_) / "base.vtp").string());
+    has_base_file_ = true;
+}
+
+void VtuSeriesWriter::write_pvd() const {
+    std::ostringstream x;
+    x.precision(17);
+    x << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+    for (const auto& [time, file] : entries_) {
+        x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+        if (has_base_file_)
+            x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"1\" file=\"base.vtp\"/>\n";
+    }
+    x << "  </Collection>\n</VTKFile>\n";
+    write_file_atomically(pvd_path_, x.str());
+}
+
+} // namespace plastica

@@ -1,0 +1,61 @@
+// Observer that writes every k-th converged step as out/<scene>/vtu/step_NNNNNN.vtu through
+// VTK's XML writer (appended, zlib, Float64), and keeps <scene>.pvd valid after each step
+// (rewritten whole through a temporary file and a rename). The PVD time is monotone (the
+// step index, or the cumulative arc length); the load factor is field data. The base line and
+// spring anchors go once to base.vtp, listed as part 1 of every time step.
+// Arrays are written only where the scene has them (DESIGN §5).
+#pragma once
+
+#include "analysis/step_result.hpp"
+#include "model/model.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+enum class SeriesTime { step, arc_length };
+
+struct SeriesOptions {
+    int every = 1;                  // write every k-th step (the first and last always)
+    SeriesTime time = SeriesTime::step;
+};
+
+class VtuSeriesWriter {
+public:
+    VtuSeriesWriter(const Model& model, const std::string& directory, SeriesOptions options = {});
+    ~VtuSeriesWriter();
+    VtuSeriesWriter(VtuSeriesWriter&&) noexcept;
+
+    void operator()(const StepResult& r);
+    // Writes the last step if --every skipped it. Call once when the analysis ends.
+    void finish();
+
+    std::size_t steps_written() const { return entries_.size(); }
+    const std::string& pvd_path() const { return pvd_path_; }
+
+    // Array names a scene produces (for tests and the README).
+    static std::vector<std::string> point_arrays(const Model& model);
+    static std::vector<std::string> cell_arrays(const Model& model);
+
+private:
+    void write_step(const StepResult& r);
+    void write_base();
+    void write_pvd() const;
+
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    const Model* model_;
+    std::string directory_;
+    std::string pvd_path_;
+    SeriesOptions options_;
+    std::vector<std::pair<double, std::string>> entries_; // time, relative file name
+    bool has_base_file_ = false;
+    std::optional<StepResult> pending_;                   // last skipped step
+};
+
+std::string step_file_name(int step);
+
+} // namespace plastica

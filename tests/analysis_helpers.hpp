@@ -1,0 +1,72 @@
+// Helpers for tests: run a scene given as TOML text and keep every step's result.
+#pragma once
+
+#include "analysis/path_following.hpp"
+#include "scene_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace plastica::testing {
+
+struct Run {
+    Model model;
+    RunSummary summary;
+    std::vector<StepResult> steps;
+    std::vector<IterationTrace> trace;
+
+    double node_dof(const StepResult& s, double x, double y, int dof) const {
+        for (std::size_t k = 0; k < model.nodes.size(); ++k)
+            if (std::hypot(model.nodes[k].x - x, model.nodes[k].y - y) < 1e-9 * (1 + std::abs(x) + std::abs(y)))
+                return s.displacement[3 * k + dof];
+        throw std::runtime_error("no node there");
+    }
+    double max_load() const {
+        double m = -1e300;
+        for (const StepResult& s : steps) m = std::max(m, s.load);
+        return m;
+    }
+};
+
+inline Run run_scene(const std::string& toml) {
+    Run r;
+    r.model = read_scene_text(toml, "test.toml");
+    PathFollowing analysis(r.model);
+    r.summary = analysis.run({[&](const StepResult& s) { r.steps.push_back(s); }});
+    r.trace = analysis.trace();
+    return r;
+}
+
+// Linear interpolation of y at x along a path that passes x (first crossing).
+template <class GetX, class GetY>
+double value_at(const std::vector<StepResult>& steps, double x, GetX gx, GetY gy) {
+    for (std::size_t k = 1; k < steps.size(); ++k) {
+        const double x0 = gx(steps[k - 1]), x1 = gx(steps[k]);
+        if ((x0 - x) * (x1 - x) <= 0.0 && x0 != x1)
+            return gy(steps[k - 1]) + (gy(steps[k]) - gy(steps[k - 1])) * (x - x0) / (x1 - x0);
+    }
+    throw std::runtime_error("the path does not reach the requested value");
+}
+
+inline std::string num(double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    std::string s(b);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0"; // TOML: a float, not an integer
+    return s;
+}
+
+// A horizontal cantilever [0, L] clamped at x = 0 with n elements.
+inline std::string cantilever(double L, int n, double E, double A, double I, const std::string& loads,
+                              const std::string& analysis) {
+    return "[scene]\nname = \"cantilever\"\n[[material]]\nname = \"m\"\nE = " + num(E) +
+           "\n[[section]]\nname = \"s\"\nmaterial = \"m\"\nA = " + num(A) + "\nI = " +
+           num(I) + "\n[[line]]\nstart = [0.0, 0.0]\nend = [" + num(L) +
+           ", 0.0]\nelements = " + std::to_string(n) +
+           "\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n" + loads +
+           "[analysis]\n" + analysis;
+}
+
+} // namespace plastica::testing

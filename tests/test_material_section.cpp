@@ -1,0 +1,133 @@
+// Material point and section tests against exact values (BENCHMARKS.md §2.1).
+#include "material/bilinear_steel.hpp"
+#include "scene_reader.hpp"
+#include "section/fibre_section.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace plastica;
+
+namespace {
+constexpr double E = 200e3, fy = 250.0, b = 10.0, h = 20.0;
+
+FibreSection rectangle(int fibres) {
+    SectionSpec s = rectangle_section(E, b, h, fibres);
+    s.steel = SteelSpec{E, fy, 0.0};
+    return FibreSection(s);
+}
+} // namespace
+
+TEST_CASE("Bilinear steel yields at fy, unloads elastically and keeps its plastic strain", "[material]") {
+    BilinearSteel m(SteelSpec{E, fy, 0.02}, 0.0);
+    const double ey = fy / E;
+    m.set_trial_strain(0.5 * ey);
+    CHECK(m.stress() == Approx(0.5 * fy));
+    CHECK(m.tangent() == E);
+    m.set_trial_strain(3.0 * ey);
+    CHECK(m.stress() == Approx(fy));
+    CHECK(m.tangent() == 0.0);
+    m.commit();
+    m.set_trial_strain(2.0 * ey); // unloading by ey: elastic
+    CHECK(m.stress() == Approx(0.0).margin(1e-9));
+    CHECK(m.plastic_strain() == Approx(2.0 * ey));
+    m.revert();
+    CHECK(m.stress() == Approx(fy));
+    m.set_trial_strain(0.03); // past εu: failed, carries nothing
+    CHECK(m.failed());
+    CHECK(m.stress() == 0.0);
+}
+
+TEST_CASE("Rectangle: M/My = 1.5 − 0.5(κy/κ)² past first yield, converging with the fibre count", "[section]") {
+    const double My = fy * b * h * h / 6.0, ky = 2.0 * fy / (E * h);
+    std::vector<double> errors;
+    for (int n : {4, 10, 20, 50, 100}) {
+        const FibreSection s = rectangle(n);
+        double worst = 0.0;
+        for (const MomentCurvaturePoint& p : s.moment_curvature(0.0, 10.0 * ky, 50)) {
+            if (p.curvature < ky) continue;
+            const double exact = My * (1.5 - 0.5 * (ky / p.curvature) * (ky / p.curvature));
+            worst = std::max(worst, std::abs(p.moment - exact) / exact);
+        }
+        errors.push_back(worst);
+    }
+    INFO("max relative error for 4, 10, 20, 50, 100 fibres: " << Catch::Detail::stringify(errors));
+    for (std::size_t k = 1; k < errors.size(); ++k) CHECK(errors[k] < errors[k - 1]);
+    // Midpoint fibres: the error falls like 1/n² (EI itself is low by 1/n²).
+    CHECK(errors.back() < 2e-4);
+    CHECK(errors[1] < 2e-2);
+}
+
+TEST_CASE("Rectangle: the fully plastic interaction is M/Mp = 1 − (N/Ny)²", "[section]") {
+    const FibreSection s = rectangle(100);
+    const double Ny = fy * b * h, Mp = fy * b * h * h / 4.0;
+    for (double n : {0.0, 0.2, 0.5, 0.8, 0.95}) {
+        CAPTURE(n);
+        // The partly yielded fibre at the axis acts at its centre instead of over its depth
+        // h/n: M is off by at most fy·(bh/n)·(h/2n) = 2Mp/n² (2e-4 Mp for 100 fibres).
+        CHECK(s.moment_capacity(n * Ny, 1.0) == Approx(Mp * (1.0 - n * n)).margin(2e-4 * Mp));
+        CHECK(s.moment_capacity(-n * Ny, -1.0) == Approx(Mp * (1.0 - n * n)).margin(2e-4 * Mp));
+    }
+}
+
+TEST_CASE("SCM: Newton finds the deformation carrying (N, M) and the tangents EA_T, EI_T", "[section]") {
+    FibreSection s = rectangle(50);
+    const double My = fy * b * h * h / 6.0, Ny = fy * b * h;
+    // Elastic: EI_T = EI of the fibres, curvature M / EI.
+    ScmResult r = s.solve_for_forces(0.1 * Ny, 0.5 * My);
+    REQUIRE(r.outcome == ScmOutcome::converged);
+    CHECK(r.ei_tangent == Approx(s.elastic_ei()));
+    CHECK(r.curvature == Approx(0.5 * My / s.elastic_ei()));
+    CHECK(r.response.N == Approx(0.1 * Ny));
+    // Partly plastic at N = 0: EI_T/EI = (κy/κ)³ for the exact rectangle.
+    FibreSection t = rectangle(100);
+    const ScmResult p = t.solve_for_forces(0.0, 1.4 * My);
+    REQUIRE(p.outcome == ScmOutcome::converged);
+    const double ky = 2.0 * fy / (E * h);
+    const double kappa = ky / std::sqrt(3.0 - 2.0 * 1.4); // from M/My = 1.5 − 0.5(κy/κ)²
+    CHECK(p.curvature == Approx(kappa).epsilon(2e-3));
+    // The fibre tangent is piecewise constant: it brackets the exact (κy/κ)³ within a layer.
+    CHECK(p.ei_tangent / t.elastic_ei() == Approx(std::pow(ky / kappa, 3)).epsilon(0.05));
+    // Beyond capacity: a clear answer, not a diverging loop.
+    CHECK(t.solve_for_forces(0.0, 1.6 * My).outcome == ScmOutcome::beyond_capacity);
+}
+
+namespace {
+// I section without fillets: closed-form plastic interaction (BENCHMARKS.md §2.1).
+double i_section_mpc(double d, double bf, double tf, double tw, double N) {
+    const double hw = d - 2 * tf;
+    if (N <= fy * tw * hw) return fy * (bf * tf * (d - tf) + tw * hw * hw / 4.0) - N * N / (4.0 * fy * tw);
+    const double e = (N / fy - tw * hw) / (2.0 * bf);
+    return fy * bf * (tf - e) * (d - tf + e);
+}
+
+SectionSpec heb300(double residual) {
+    const std::string toml = "[scene]\nname = \"x\"\n[[material]]\nname = \"m\"\nE = 200000.0\nfy = 250.0\n"
+        "[[section]]\nname = \"heb\"\nmaterial = \"m\"\nshape = \"i\"\ndepth = 300.0\nflange_width = 300.0\n"
+        "flange_thickness = 19.0\nweb_thickness = 11.0\nflange_layers = 8\nflange_strips = 10\nweb_fibres = 200\n"
+        "residual_stress = " + std::to_string(residual) + "\n"
+        "[[line]]\nstart = [0.0, 0.0]\nend = [1.0, 0.0]\nelements = 1\nsection = \"heb\"\n"
+        "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[load]]\nat = [1.0, 0.0]\nfy = 1.0\n"
+        "[analysis]\nscheme = \"load_control\"\nincrement = 0.1\ntarget_load_factor = 1.0\n";
+    return read_scene_text(toml, "heb.toml").sections[0];
+}
+} // namespace
+
+TEST_CASE("I section: the plastic N–M interaction matches the closed form, web and flange axis", "[section]") {
+    const FibreSection s(heb300(0.0));
+    const double d = 300, bf = 300, tf = 19, tw = 11;
+    const double Ny = fy * (2 * bf * tf + (d - 2 * tf) * tw);
+    const double Mp = i_section_mpc(d, bf, tf, tw, 0.0);
+    for (double n : {0.0, 0.1, 0.2, 0.4, 0.6, 0.8, 0.9}) {
+        CAPTURE(n);
+        // Layers of tf/8 and hw/200 resolve the neutral axis to within one layer.
+        CHECK(s.moment_capacity(n * Ny, 1.0) == Approx(i_section_mpc(d, bf, tf, tw, n * Ny)).margin(2e-3 * Mp));
+    }
+}
+
+TEST_CASE("Residual stresses lower the first-yield moment but not the plastic capacity", "[section]") {
+    const FibreSection plain(heb300(0.0)), residual(heb300(0.3));
+    for (double N : {0.0, 500e3}) {
+        CHECK(residual.moment_capacity(N, 1.0) == Approx(plain.moment_capacity(N, 1.0)).epsilon(1e-12));
+        CHECK(residual.first_yield_moment(N) < 0.9 * plain.first_yield_moment(N));
+    }
+}

@@ -1,0 +1,115 @@
+// Bad scene files: each mistake gives one message naming the file, the line and the key.
+#include "analysis/path_following.hpp"
+#include "scene_reader.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace plastica;
+
+namespace {
+
+const std::string good = R"([scene]
+name = "bar"
+[[material]]
+name = "m"
+E = 1000.0
+[[section]]
+name = "s"
+material = "m"
+A = 1.0
+I = 1.0
+[[line]]
+start = [0.0, 0.0]
+end = [1.0, 0.0]
+elements = 2
+section = "s"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[load]]
+at = [1.0, 0.0]
+fy = -1.0
+[analysis]
+scheme = "load_control"
+increment = 0.1
+target_load_factor = 1.0
+)";
+
+std::string replaced(const std::string& from, const std::string& to) {
+    std::string s = good;
+    const auto at = s.find(from);
+    REQUIRE(at != std::string::npos);
+    return s.replace(at, from.size(), to);
+}
+
+struct Case {
+    const char* what;
+    std::string text;
+    const char* message; // expected part of the message (after file:line:)
+    int line;
+};
+
+} // namespace
+
+TEST_CASE("The reference scene used by the error table is valid", "[scene]") {
+    const Model m = read_scene_text(good, "bar.toml");
+    CHECK(m.elements.size() == 2);
+}
+
+TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors]") {
+    const std::vector<Case> cases = {
+        {"unknown key with suggestion", replaced("elements = 2", "elements = 2\nsectoin = \"s\""), "'line[1].sectoin': unknown key; did you mean 'section'?", 15},
+        {"negative length", replaced("A = 1.0", "A = -1.0"), "'section[1].A': expected a positive number, got -1", 9},
+        {"missing section", replaced("section = \"s\"", "section = \"t\""), "'line[1].section': no [[section]] named 't'", 15},
+        {"node out of range", good + "[[element]]\nnodes = [1, 9]\nsection = \"s\"\n", "no [[node]] with id 1", 27},
+        {"NaN", replaced("E = 1000.0", "E = nan"), "'material[1].E': expected a finite number", 5},
+        {"infinity", replaced("I = 1.0", "I = inf"), "'section[1].I': expected a finite number", 10},
+        {"wrong type", replaced("elements = 2", "elements = \"two\""), "'line[1].elements': expected a whole number", 14},
+        {"missing required key", replaced("E = 1000.0\n", ""), "missing required key 'E'", 3},
+        {"zero length line", replaced("end = [1.0, 0.0]", "end = [0.0, 0.0]"), "'line[1].end': a line needs a positive length", 13},
+        {"load on missing node", replaced("at = [1.0, 0.0]", "at = [5.0, 5.0]"), "'load[1].at': no node at [5, 5]", 20},
+        {"absurd size", replaced("elements = 2", "elements = 1000000000"), "expected a whole number from 1 to 1000000", 14},
+        {"bad scheme", replaced("scheme = \"load_control\"", "scheme = \"newton\""), "'analysis.scheme': expected one of 'arc_length', 'load_control', 'displacement_control', got 'newton'", 23},
+        {"missing stop", replaced("target_load_factor = 1.0\n", ""), "missing a stop", 22},
+        {"bad DOF name", replaced("fix = [\"ux\", \"uy\", \"rz\"]", "fix = [\"ux\", \"uz\"]"), "expected 'ux', 'uy' or 'rz', got 'uz'", 18},
+        {"TOML syntax", replaced("E = 1000.0", "E = = 1000.0"), "", 5},
+        {"missing scene name", replaced("name = \"bar\"\n", ""), "missing required key 'name'", 1},
+        {"unsafe scene name", replaced("name = \"bar\"", "name = \"../etc\""), "'scene.name': expected 1 to 64 letters", 2},
+        {"duplicate material", replaced("[[section]]", "[[material]]\nname = \"m\"\nE = 1.0\n[[section]]"), "a material named 'm' exists already", 7},
+        {"no loads", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0\n", ""), "no [[load]]", 1},
+        {"zero load", replaced("fy = -1.0", "fy = 0.0"), "a load needs a non-zero", 19},
+        {"unknown table", good + "[solver]\nx = 1\n", "'solver': unknown key", 26},
+        {"plastic section without fy", replaced("I = 1.0", "I = 1.0\nplastic = true"), "an inelastic section needs a material with 'fy'", 11},
+        {"unilateral base without ky", good + "[[foundation]]\nkind = \"unilateral\"\non = \"all\"\nkx = 1.0\n", "a unilateral base needs a positive normal stiffness", 26},
+        {"penetrating base", good + "[[foundation]]\nkind = \"unilateral\"\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.5]\n", "already penetrates the base at [0, 0], [0.5, 0], [1, 0]", 30},
+        {"unused node", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n", "node 1 belongs to no element", 26},
+        {"duplicate node id", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n[[node]]\nid = 1\nx = 4.0\ny = 3.0\n", "node id 1 is used twice", 31},
+        {"coincident element nodes", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n[[element]]\nnodes = [1, 1]\nsection = \"s\"\n", "an element's two nodes coincide", 31},
+        {"bad ultimate strain", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nultimate_strain = 0.0001"), "expected 0 (never fails) or a strain above fy/E", 7},
+        {"bilateral foundation with a base", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.0]\n", "a base line belongs to a unilateral foundation", 29},
+        {"fibres off the centroid", replaced("A = 1.0\nI = 1.0", "shape = \"fibres\"\nfibres = [[1.0, 0.5], [1.0, 1.5]]"), "measured from the centroid", 10},
+    };
+    CHECK(cases.size() >= 30);
+    for (const Case& c : cases) {
+        INFO(c.what);
+        try {
+            read_scene_text(c.text, "bad.toml");
+            FAIL("no error for: " << c.what);
+        } catch (const SceneError& e) {
+            const std::string msg = e.what();
+            INFO(msg);
+            CHECK(msg.rfind("bad.toml:" + std::to_string(c.line) + ":", 0) == 0);
+            CHECK_THAT(msg, Catch::Contains(c.message));
+        }
+    }
+}
+
+TEST_CASE("A structure that is a mechanism before loading is named with its free DOF", "[scene][errors]") {
+    std::string s = good;
+    s.replace(s.find("fix = [\"ux\", \"uy\", \"rz\"]"), 24, "fix = [\"ux\", \"uy\"]");
+    const Model m = read_scene_text(s, "mech.toml");
+    PathFollowing analysis(m);
+    const std::string why = analysis.initial_mechanism();
+    CHECK_THAT(why, Catch::Contains("mechanism before loading"));
+    CHECK_THAT(why, Catch::Contains("rz"));
+}
