@@ -457,6 +457,16 @@ private:
                     nodes.push_back(node_at(r, "at", {*(*xy)[0].value<double>(), *(*xy)[1].value<double>()}));
                 }
             }
+            if (r.has("below")) {
+                // Keeps only the selected nodes whose initial height is at most this value.
+                const double limit = r.number("below");
+                if (nodes.empty()) r.fail("below", "'below' filters the nodes chosen by 'on' or 'at'");
+                std::vector<int> kept;
+                for (int n : nodes)
+                    if (model_.nodes[n].y <= limit) kept.push_back(n);
+                nodes = kept;
+                if (nodes.empty()) r.fail("below", "no selected node lies at or below this height");
+            }
             if (nodes.empty()) r.fail("on", "a foundation needs nodes: 'on' (\"all\" or a generator name) or 'at'");
             std::vector<double> scale(model_.nodes.size(), 1.0);
             if (const toml::array* a = r.array("halve_at")) {
@@ -515,7 +525,7 @@ private:
                 s.unilateral = unilateral;
                 model_.springs.push_back(s);
             }
-            r.finish({"kind", "on", "at", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal"});
+            r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal"});
         }
     }
 

@@ -1,0 +1,109 @@
+// End-to-end tests of the command line: exit codes, messages and files.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int code;
+    std::string output;
+};
+
+Result plastica(const std::string& args) {
+    const fs::path log = fs::temp_directory_path() / "plastica_cli_test.log";
+    const std::string cmd = std::string(PLASTICA_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    return {WEXITSTATUS(status), text.str()};
+}
+
+std::string model(const std::string& name) { return std::string(PLASTICA_SOURCE_DIR) + "/models/" + name; }
+
+fs::path scratch(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("plastica_cli_" + name);
+    fs::remove_all(p);
+    return p;
+}
+
+} // namespace
+
+TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json and the series", "[cli]") {
+    const fs::path out = scratch("ring");
+    const Result r = plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render -q");
+    CHECK(r.code == 0);
+    CHECK(fs::exists(out / "curve.csv"));
+    CHECK(fs::exists(out / "run.json"));
+    CHECK(fs::exists(out / "ring_elastic.pvd"));
+    CHECK(fs::exists(out / "vtu" / "step_000200.vtu"));
+}
+
+TEST_CASE("A bad scene file exits with 2 and names file, line and key, creating no output", "[cli]") {
+    const fs::path dir = scratch("bad");
+    fs::create_directories(dir);
+    std::ifstream in(model("ring_elastic.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    s.replace(s.find("radius = 100.0"), 14, "radius = -100.0");
+    std::ofstream(dir / "bad.toml") << s;
+    const Result r = plastica("run " + (dir / "bad.toml").string() + " -o " + (dir / "out").string() + " --no-render");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("bad.toml:20: 'arc[1].radius': expected a positive number, got -100"));
+    CHECK_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_CASE("An analysis that stops early exits with 3 and keeps its converged steps", "[cli]") {
+    const fs::path dir = scratch("early");
+    fs::create_directories(dir);
+    std::ifstream in(model("ring_elastic.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    s.replace(s.find("max_steps = 400"), 15, "max_steps = 5");
+    std::ofstream(dir / "early.toml") << s;
+    const Result r = plastica("run " + (dir / "early.toml").string() + " -o " + (dir / "out").string() + " --no-render -q");
+    CHECK(r.code == 3);
+    CHECK_THAT(r.output, Catch::Contains("step limit reached"));
+    CHECK(fs::exists(dir / "out" / "vtu" / "step_000005.vtu"));
+    std::ifstream json(dir / "out" / "run.json");
+    std::stringstream j;
+    j << json.rdbuf();
+    CHECK_THAT(j.str(), Catch::Contains("\"status\": \"step_limit\""));
+}
+
+TEST_CASE("An output folder holding another scene is refused without --force", "[cli]") {
+    const fs::path out = scratch("mixed");
+    REQUIRE(plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render -q").code == 0);
+    const Result r = plastica("run " + model("ring_bilateral.toml") + " -o " + out.string() + " --no-render -q");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("holds results of scene 'ring_elastic'"));
+    CHECK(plastica("run " + model("ring_bilateral.toml") + " -o " + out.string() + " --no-render -q --force").code == 0);
+    CHECK_FALSE(fs::exists(out / "ring_elastic.pvd"));
+}
+
+TEST_CASE("Help is complete and unknown commands or options are bad input", "[cli]") {
+    const Result help = plastica("--help");
+    CHECK(help.code == 0);
+    CHECK_THAT(help.output, Catch::Contains("run SCENE"));
+    CHECK_THAT(plastica("run --help").output, Catch::Contains("--every"));
+    CHECK(plastica("frobnicate").code == 2);
+    CHECK(plastica("run " + model("ring_elastic.toml") + " --no-such-option").code == 2);
+}
+
+TEST_CASE("plastica section writes the capacity and moment-curvature curves", "[cli]") {
+    const fs::path out = scratch("section");
+    const Result r = plastica("section " + model("ring_inelastic.toml") + " -o " + out.string());
+    CHECK(r.code == 0);
+    CHECK(fs::exists(out / "ring_capacity.csv"));
+    CHECK(fs::exists(out / "ring_moment_curvature.csv"));
+    // Mp of the ring's 10-fibre rectangle: fy·b·h²/4 = 10.0 (exact for an even fibre count).
+    CHECK_THAT(r.output, Catch::Contains("Mp(0) = 10"));
+}

@@ -1,0 +1,147 @@
+// The VTU/PVD series is the contract between the engine and the render stage: read every
+// file back with VTK's own XML readers and compare with the engine's results.
+#include "analysis/path_following.hpp"
+#include "scene_reader.hpp"
+#include "vtu_series_writer.hpp"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+
+using namespace plastica;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Series {
+    Model model;
+    std::vector<StepResult> steps;
+    fs::path folder;
+};
+
+Series run_with_series(const std::string& scene, int max_steps, int every = 1) {
+    Series s;
+    s.model = read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/" + scene + ".toml");
+    s.model.analysis.max_steps = max_steps;
+    s.folder = fs::temp_directory_path() / ("plastica_vtu_" + scene + std::to_string(every));
+    fs::remove_all(s.folder);
+    VtuSeriesWriter writer(s.model, s.folder.string(), {every, SeriesTime::step});
+    PathFollowing analysis(s.model);
+    analysis.run({std::ref(writer), [&](const StepResult& r) { s.steps.push_back(r); }});
+    writer.finish();
+    return s;
+}
+
+std::vector<std::pair<double, std::string>> pvd_entries(const fs::path& pvd) {
+    std::ifstream in(pvd);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    std::vector<std::pair<double, std::string>> out;
+    const std::regex entry("timestep=\"([^\"]+)\" group=\"\" part=\"0\" file=\"([^\"]+)\"");
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), entry); it != std::sregex_iterator(); ++it)
+        out.emplace_back(std::stod((*it)[1]), (*it)[2]);
+    return out;
+}
+
+std::set<std::string> names(vtkFieldData* data) {
+    std::set<std::string> out;
+    for (int i = 0; i < data->GetNumberOfArrays(); ++i) out.insert(data->GetArrayName(i));
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("Every VTU step reads back through VTK with the engine's values to full precision", "[output]") {
+    const Series s = run_with_series("ring_inelastic", 12);
+    const auto entries = pvd_entries(s.folder / "ring_inelastic.pvd");
+    REQUIRE(entries.size() == s.steps.size());
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        CHECK(entries[k].first == Approx(static_cast<double>(k))); // monotone step time
+        vtkNew<vtkXMLUnstructuredGridReader> reader;
+        reader->SetFileName((s.folder / entries[k].second).string().c_str());
+        reader->Update();
+        vtkUnstructuredGrid* grid = reader->GetOutput();
+        const StepResult& r = s.steps[k];
+        REQUIRE(grid->GetNumberOfPoints() == static_cast<vtkIdType>(s.model.nodes.size()));
+        REQUIRE(grid->GetNumberOfCells() == static_cast<vtkIdType>(s.model.elements.size()));
+        CHECK(grid->GetCellType(0) == VTK_LINE);
+        vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
+        REQUIRE(u);
+        CHECK(grid->GetPointData()->GetVectors() == u);
+        CHECK(u->GetDataType() == VTK_DOUBLE);
+        for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+            double p[3];
+            grid->GetPoint(i, p);
+            CHECK(p[0] == s.model.nodes[i].x + r.displacement[3 * i]);
+            CHECK(p[1] == s.model.nodes[i].y + r.displacement[3 * i + 1]);
+            CHECK(u->GetComponent(i, 1) == r.displacement[3 * i + 1]);
+            CHECK(grid->GetPointData()->GetArray("rotation")->GetComponent(i, 0) == r.displacement[3 * i + 2]);
+        }
+        vtkDataArray* m = grid->GetCellData()->GetArray("moment_j");
+        for (vtkIdType e = 0; e < grid->GetNumberOfCells(); ++e)
+            CHECK(m->GetComponent(e, 0) == r.elements[e].forces.moment_j);
+        vtkFieldData* fd = grid->GetFieldData();
+        CHECK(fd->GetArray("load_factor")->GetComponent(0, 0) == r.load_factor);
+        CHECK(fd->GetArray("TimeValue")->GetComponent(0, 0) == entries[k].first);
+        CHECK(fd->GetArray("step")->GetComponent(0, 0) == r.step);
+    }
+}
+
+TEST_CASE("Each ring scene writes exactly the arrays it needs", "[output]") {
+    for (const std::string scene : {"ring_elastic", "ring_inelastic", "ring_bilateral"}) {
+        const Series s = run_with_series(scene, 2);
+        vtkNew<vtkXMLUnstructuredGridReader> reader;
+        reader->SetFileName((s.folder / "vtu" / step_file_name(2)).string().c_str());
+        reader->Update();
+        const auto points = names(reader->GetOutput()->GetPointData());
+        const auto cells = names(reader->GetOutput()->GetCellData());
+        const auto expect_points = VtuSeriesWriter::point_arrays(s.model);
+        const auto expect_cells = VtuSeriesWriter::cell_arrays(s.model);
+        CAPTURE(scene);
+        CHECK(points == std::set<std::string>(expect_points.begin(), expect_points.end()));
+        CHECK(cells == std::set<std::string>(expect_cells.begin(), expect_cells.end()));
+        const bool inelastic = scene == "ring_inelastic", unilateral = scene != "ring_bilateral";
+        CHECK(points.count("plastic_utilisation") == (inelastic ? 1u : 0u));
+        CHECK(cells.count("ei_ratio") == (inelastic ? 1u : 0u));
+        CHECK(points.count("contact_force") == (unilateral ? 1u : 0u));
+        CHECK(points.count("spring_force") == (unilateral ? 0u : 1u));
+        // The base line (and spring anchors) as part 1 of the collection.
+        vtkNew<vtkXMLPolyDataReader> base;
+        base->SetFileName((s.folder / "base.vtp").string().c_str());
+        base->Update();
+        CHECK(base->GetOutput()->GetNumberOfLines() == (unilateral ? 1 : 0));
+    }
+}
+
+TEST_CASE("A run stopped after k steps leaves a valid PVD of k steps", "[output]") {
+    const Series s = run_with_series("ring_elastic", 7);
+    const auto entries = pvd_entries(s.folder / "ring_elastic.pvd");
+    CHECK(entries.size() == 8); // the unloaded state and 7 steps
+    for (const auto& [time, file] : entries) CHECK(fs::exists(s.folder / file));
+    // No temporary file is left behind.
+    for (const auto& f : fs::recursive_directory_iterator(s.folder))
+        CHECK(f.path().string().find(".tmp") == std::string::npos);
+}
+
+TEST_CASE("Writing every k-th step keeps the first and the last", "[output]") {
+    const Series s = run_with_series("ring_elastic", 7, 3);
+    const auto entries = pvd_entries(s.folder / "ring_elastic.pvd");
+    std::vector<std::string> files;
+    for (const auto& e : entries) files.push_back(e.second);
+    CHECK(files == std::vector<std::string>{"vtu/" + step_file_name(0), "vtu/" + step_file_name(3),
+                                            "vtu/" + step_file_name(6), "vtu/" + step_file_name(7)});
+}
