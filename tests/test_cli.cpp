@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -16,7 +17,8 @@ struct Result {
 };
 
 Result plastica(const std::string& args) {
-    const fs::path log = fs::temp_directory_path() / "plastica_cli_test.log";
+    // One log per test process: CTest runs the test cases in parallel.
+    const fs::path log = fs::temp_directory_path() / ("plastica_cli_" + std::to_string(::getpid()) + ".log");
     const std::string cmd = std::string(PLASTICA_BINARY) + " " + args + " > " + log.string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     std::ifstream in(log);

@@ -36,7 +36,9 @@ Series run_with_series(const std::string& scene, int max_steps, int every = 1) {
     Series s;
     s.model = read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/" + scene + ".toml");
     s.model.analysis.max_steps = max_steps;
-    s.folder = fs::temp_directory_path() / ("plastica_vtu_" + scene + std::to_string(every));
+    // Unique per scene, step count and stride: CTest runs these test cases in parallel.
+    s.folder = fs::temp_directory_path() /
+               ("plastica_vtu_" + scene + "_" + std::to_string(max_steps) + "_" + std::to_string(every));
     fs::remove_all(s.folder);
     VtuSeriesWriter writer(s.model, s.folder.string(), {every, SeriesTime::step});
     PathFollowing analysis(s.model);
