@@ -35,6 +35,19 @@ fs::path scratch(const std::string& name) {
     return p;
 }
 
+// A copy of a model in dir with one piece of text replaced; returns the copy's path.
+fs::path edited_model(const fs::path& dir, const std::string& name, const std::string& from, const std::string& to) {
+    fs::create_directories(dir);
+    std::ifstream in(model("ring_elastic.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    s.replace(s.find(from), from.size(), to);
+    const fs::path path = dir / name;
+    std::ofstream(path) << s;
+    return path;
+}
+
 } // namespace
 
 TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json and the series", "[cli]") {
@@ -49,14 +62,8 @@ TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json a
 
 TEST_CASE("A bad scene file exits with 2 and names file, line and key, creating no output", "[cli]") {
     const fs::path dir = scratch("bad");
-    fs::create_directories(dir);
-    std::ifstream in(model("ring_elastic.toml"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    s.replace(s.find("radius = 100.0"), 14, "radius = -100.0");
-    std::ofstream(dir / "bad.toml") << s;
-    const Result r = plastica("run " + (dir / "bad.toml").string() + " -o " + (dir / "out").string() + " --no-render");
+    const fs::path bad = edited_model(dir, "bad.toml", "radius = 100.0", "radius = -100.0");
+    const Result r = plastica("run " + bad.string() + " -o " + (dir / "out").string() + " --no-render");
     CHECK(r.code == 2);
     CHECK_THAT(r.output, Catch::Contains("bad.toml:20: 'arc[1].radius': expected a positive number, got -100"));
     CHECK_FALSE(fs::exists(dir / "out"));
@@ -64,14 +71,8 @@ TEST_CASE("A bad scene file exits with 2 and names file, line and key, creating 
 
 TEST_CASE("An analysis that stops early exits with 3 and keeps its converged steps", "[cli]") {
     const fs::path dir = scratch("early");
-    fs::create_directories(dir);
-    std::ifstream in(model("ring_elastic.toml"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    s.replace(s.find("max_steps = 400"), 15, "max_steps = 5");
-    std::ofstream(dir / "early.toml") << s;
-    const Result r = plastica("run " + (dir / "early.toml").string() + " -o " + (dir / "out").string() + " --no-render -q");
+    const fs::path early = edited_model(dir, "early.toml", "max_steps = 400", "max_steps = 5");
+    const Result r = plastica("run " + early.string() + " -o " + (dir / "out").string() + " --no-render -q");
     CHECK(r.code == 3);
     CHECK_THAT(r.output, Catch::Contains("step limit reached"));
     CHECK(fs::exists(dir / "out" / "vtu" / "step_000005.vtu"));
