@@ -8,13 +8,12 @@ namespace plastica {
 
 namespace {
 
-std::vector<int> number_equations(const Model& model, std::vector<bool>& supported, int& free_count) {
+std::vector<int> number_equations(const Model& model, int& free_count) {
     const int n = model.dof_count();
-    supported.assign(n, false);
     std::vector<bool> constrained(n, false);
     for (const Support& s : model.supports)
         for (int d = 0; d < dofs_per_node; ++d)
-            if (s.fixed[d]) supported[dofs_per_node * s.node + d] = constrained[dofs_per_node * s.node + d] = true;
+            if (s.fixed[d]) constrained[dofs_per_node * s.node + d] = true;
     for (const PrescribedDisplacement& p : model.prescribed)
         constrained[dofs_per_node * p.node + p.dof] = true;
     std::vector<int> eq(n, -1);
@@ -49,7 +48,7 @@ std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0) {
 
 StructuralSystem::StructuralSystem(const Model& model)
     : element_specs_(model.elements), nodes_(model.nodes), foundation_(model),
-      equation_(number_equations(model, supported_, free_count_)),
+      equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
     elements_.reserve(model.elements.size());
     for (const ElementSpec& e : model.elements) {
@@ -66,7 +65,6 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
     internal_.setZero();
     coupling_.setZero();
     assembler_.set_zero();
-    force_scale_ = 0.0;
     Vector6 d, f;
     Matrix6 k;
     int dofs[6];
@@ -84,7 +82,6 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
                                 std::to_string(spec.node_j + 1) + ")";
             return false;
         }
-        force_scale_ += f.squaredNorm();
         for (int a = 0; a < 6; ++a) {
             internal_[dofs[a]] += f[a];
             const int row = equation_[dofs[a]];
@@ -100,10 +97,8 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         const int base = dofs_per_node * foundation_.spring(s).node;
         const Eigen::Vector3d fs = foundation_.internal_force(s);
         internal_.segment<3>(base) += fs;
-        force_scale_ += fs.squaredNorm();
         assembler_.add(elements_.size() + s, foundation_.tangent(s));
     }
-    force_scale_ = std::sqrt(force_scale_);
     return true;
 }
 

@@ -31,7 +31,6 @@ public:
     const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū, free DOFs
     const SparseMatrix& tangent() const { return assembler_.matrix(); }
-    double force_scale() const { return force_scale_; }
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
 
@@ -51,13 +50,11 @@ private:
     std::vector<Node> nodes_;
     std::vector<CorotationalBeam> elements_;
     Foundation foundation_;
-    std::vector<bool> supported_; // filled while the equations are numbered
     int free_count_ = 0;
     std::vector<int> equation_;
     BlockAssembler assembler_;
     Eigen::VectorXd internal_;
     Eigen::VectorXd coupling_;
-    double force_scale_ = 0.0;
     std::string non_finite_where_;
 };
 

@@ -29,7 +29,6 @@ public:
             }
     }
     const SparseMatrix& matrix() const { return matrix_; }
-    SparseMatrix& matrix() { return matrix_; }
 
 private:
     SparseMatrix matrix_;
