@@ -16,8 +16,14 @@ $(BUILD)/CMakeCache.txt: | deps
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# The headline job: the elastic ring, then the inelastic ring with the elastic curve in its chart.
+ifeq ($(SCENE),models/ring_inelastic.toml)
+RUN_FIRST = $(BUILD)/cli/plastica run models/ring_elastic.toml -q &&
+RUN_ARGS  = --overlay out/ring_elastic
+endif
+
 run: build
-	$(BUILD)/cli/plastica run $(SCENE)
+	$(RUN_FIRST) $(BUILD)/cli/plastica run $(SCENE) $(RUN_ARGS)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "output_folder.hpp"
+#include "render_stage.hpp"
 
 #include "analysis/path_following.hpp"
 #include "curve_writer.hpp"
@@ -39,6 +40,7 @@ int run_command(const Args& args) {
         ("no-render", "solve and write results only, draw nothing")
         ("force", "use an output folder that holds another scene's results")
         ("quiet,q", "no progress on stderr");
+    add_render_options(options);
     po::positional_options_description positional;
     positional.add("scene", 1);
     po::variables_map vm;
@@ -55,6 +57,8 @@ int run_command(const Args& args) {
         return bad_input;
     }
     const int every = vm["every"].as<int>();
+    render::RenderOptions render_options;
+    if (auto code = read_render_options(vm, render_options)) return *code;
     const std::string time = vm["time"].as<std::string>();
     if (every < 1 || (time != "step" && time != "arc_length")) {
         std::cerr << "plastica: --every takes a whole number ≥ 1 and --time 'step' or 'arc_length'\n";
@@ -108,6 +112,11 @@ int run_command(const Args& args) {
                   << " steps (" << report.summary.iterations << " iterations); peak load "
                   << report.peak_load << "; output in " << folder << "\n";
     if (report.summary.status == RunStatus::interrupted) return interrupted;
+    // The converged steps are drawn even when the analysis stopped early.
+    if (!vm.count("no-render") && report.summary.steps > 0) {
+        render_options.quiet = quiet;
+        if (const int code = render_and_report(folder, render_options); code != ok) return code;
+    }
     if (report.summary.status != RunStatus::completed) {
         std::cerr << "plastica: " << scene_file << ": analysis stopped early: " << report.summary.reason
                   << " (the " << report.summary.steps << " converged steps are kept)\n";

@@ -134,7 +134,7 @@ private:
                 return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
             }))
             r.fail("name", "expected 1 to 64 letters, digits, '_' or '-' (it names the output folder)");
-        r.string_or("title", "");
+        model_.title = r.string_or("title", "");
         r.finish({"name", "title"});
     }
 
@@ -580,7 +580,9 @@ private:
         if (!t) return;
         TomlTableReader r(*t, file_, "report");
         model_.report.load_scale = r.positive_or("load_scale", 1.0);
-        r.finish({"load_scale"});
+        model_.report.load_label = r.string_or("load_label", model_.report.load_label);
+        model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
+        r.finish({"load_scale", "load_label", "displacement_label"});
     }
 
     const toml::table& root_;

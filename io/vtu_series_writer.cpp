@@ -97,6 +97,8 @@ std::vector<std::string> VtuSeriesWriter::cell_arrays(const Model& m) {
         names.push_back("ei_ratio");
         names.push_back("utilisation_i");
         names.push_back("utilisation_j");
+        names.push_back("hinge_state_i");
+        names.push_back("hinge_state_j");
     }
     return names;
 }
@@ -226,6 +228,13 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
         auto ei = make_array("ei_ratio", 1, ne);
         auto ui = make_array("utilisation_i", 1, ne);
         auto uj = make_array("utilisation_j", 1, ne);
+        vtkNew<vtkIntArray> end_state[2];
+        end_state[0]->SetName("hinge_state_i");
+        end_state[1]->SetName("hinge_state_j");
+        for (auto& s : end_state) {
+            s->SetNumberOfTuples(ne);
+            std::fill_n(s->GetPointer(0), ne, 0);
+        }
         for (vtkIdType e = 0; e < ne; ++e) {
             const ElementResult& er = r.elements[e];
             if (!er.hinged) {
@@ -235,6 +244,8 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
             ei->SetValue(e, std::min(er.hinge[0].ei_ratio, er.hinge[1].ei_ratio));
             ui->SetValue(e, er.hinge[0].utilisation);
             uj->SetValue(e, er.hinge[1].utilisation);
+            end_state[0]->SetValue(e, static_cast<int>(er.hinge[0].state));
+            end_state[1]->SetValue(e, static_cast<int>(er.hinge[1].state));
             const int nodes[2] = {m.elements[e].node_i, m.elements[e].node_j};
             for (int end = 0; end < 2; ++end) {
                 util->SetValue(nodes[end], std::max(util->GetValue(nodes[end]), er.hinge[end].utilisation));
@@ -246,6 +257,8 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
         cd->AddArray(ei);
         cd->AddArray(ui);
         cd->AddArray(uj);
+        cd->AddArray(end_state[0]);
+        cd->AddArray(end_state[1]);
     }
 
     const double time = options_.time == SeriesTime::step ? static_cast<double>(r.step) : r.arc_length;
@@ -259,10 +272,16 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     add_field(fd, "iterations", r.iterations);
     add_field(fd, "contact_count", r.contact_count);
     add_field(fd, "hinge_count", r.hinge_count);
-    vtkNew<vtkStringArray> scene;
-    scene->SetName("scene");
-    scene->InsertNextValue(m.name);
-    fd->AddArray(scene);
+    // Names for pictures: the render stage reads them from here, not from the scene file.
+    const std::pair<const char*, const std::string*> names[] = {
+        {"scene", &m.name}, {"title", &m.title},
+        {"load_label", &m.report.load_label}, {"displacement_label", &m.report.displacement_label}};
+    for (const auto& [key, value] : names) {
+        vtkNew<vtkStringArray> text;
+        text->SetName(key);
+        text->InsertNextValue(*value);
+        fd->AddArray(text);
+    }
     grid->Modified();
 
     const std::string name = step_file_name(r.step);

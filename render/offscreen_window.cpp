@@ -3,7 +3,6 @@
 #include "render_error.hpp"
 
 #include <vtkCallbackCommand.h>
-#include <vtkLogger.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
 #include <vtkRenderer.h>

@@ -19,7 +19,8 @@ struct Result {
 Result plastica(const std::string& args) {
     // One log per test process: CTest runs the test cases in parallel.
     const fs::path log = fs::temp_directory_path() / ("plastica_cli_" + std::to_string(::getpid()) + ".log");
-    const std::string cmd = std::string(PLASTICA_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+    // No DISPLAY: drawing must not need an X server.
+    const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " " + args + " > " + log.string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     std::ifstream in(log);
     std::stringstream text;
@@ -109,4 +110,40 @@ TEST_CASE("plastica section writes the capacity and moment-curvature curves", "[
     CHECK(fs::exists(out / "ring_moment_curvature.csv"));
     // Mp of the ring's 10-fibre rectangle: fy·b·h²/4 = 10.0 (exact for an even fibre count).
     CHECK_THAT(r.output, Catch::Contains("Mp(0) = 10"));
+}
+
+TEST_CASE("plastica run draws the series and plastica render redraws it with overlays and a GIF", "[cli][render]") {
+    const fs::path out = scratch("drawn");
+    const Result run = plastica("run " + model("ring_inelastic.toml") + " -o " + out.string() +
+                                " --every 40 --size 320x180 --no-animation -q");
+    REQUIRE(run.code == 0);
+    CHECK(fs::exists(out / "frames" / "frame_000000.png"));
+    CHECK(fs::exists(out / "frames" / "frame_000200.png"));
+    CHECK(fs::exists(out / "chart.png"));
+    CHECK(fs::exists(out / "contact_sheet.png"));
+    CHECK_FALSE(fs::exists(out / "ring_inelastic.gif"));
+
+    const fs::path other = scratch("drawn_elastic");
+    REQUIRE(plastica("run " + model("ring_elastic.toml") + " -o " + other.string() + " --every 100 --no-render -q").code == 0);
+    const fs::path pictures = scratch("drawn_again");
+    const Result render = plastica("render " + (out / "ring_inelastic.pvd").string() + " -o " + pictures.string() +
+                                   " --size 320x180 --overlay " + other.string() + " --field axial_force");
+    CHECK(render.code == 0);
+    CHECK_THAT(render.output, Catch::Contains("rendered 6 frames"));
+    CHECK(fs::exists(pictures / "chart.png"));
+    if (std::system("command -v ffmpeg > /dev/null") == 0)
+        CHECK(fs::exists(pictures / "ring_inelastic.gif"));
+    else
+        CHECK_THAT(render.output, Catch::Contains("ffmpeg"));
+}
+
+TEST_CASE("plastica render refuses bad input with exit 2 and the reason", "[cli][render]") {
+    const fs::path empty = scratch("render_empty");
+    fs::create_directories(empty);
+    const Result none = plastica("render " + empty.string());
+    CHECK(none.code == 2);
+    CHECK_THAT(none.output, Catch::Contains("expected one .pvd result series, found 0"));
+    const Result size = plastica("render " + empty.string() + " --size 12by34");
+    CHECK(size.code == 2);
+    CHECK_THAT(size.output, Catch::Contains("--size takes WIDTHxHEIGHT"));
 }

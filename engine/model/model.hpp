@@ -104,10 +104,13 @@ struct AnalysisSpec {
 
 struct ReportSpec {
     double load_scale = 1.0; // reported load = load_scale * λ * ‖reference load‖ (symmetry)
+    std::string load_label = "load";                         // axis and title names in pictures
+    std::string displacement_label = "control displacement";
 };
 
 struct Model {
     std::string name;
+    std::string title;  // free text for pictures
     std::string source; // the scene file it came from
     std::vector<Node> nodes;
     std::vector<SectionSpec> sections;

@@ -1,0 +1,18 @@
+// The options the render stage shares between `plastica render` and `plastica run`, and the
+// call that reports its outcome on stderr.
+#pragma once
+
+#include "commands.hpp"
+#include "options.hpp"
+
+#include "render_series.hpp"
+
+namespace plastica::cli {
+
+void add_render_options(po::options_description& options);
+// Reads the render options; returns an exit code when they are bad.
+std::optional<int> read_render_options(const po::variables_map& vm, render::RenderOptions& options);
+// Renders a series and says what was written; returns the exit code.
+int render_and_report(const std::string& series, const render::RenderOptions& options);
+
+} // namespace plastica::cli

@@ -1,0 +1,149 @@
+#include "frame_composer.hpp"
+
+#include <vtkImageData.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace plastica::render {
+
+namespace {
+
+// The layout, in fractions of the window: a title band on top, the structure on the left.
+constexpr double band = 0.11;
+constexpr double split = 0.57;
+
+void style(vtkTextActor* text, double size, bool bold) {
+    vtkTextProperty* p = text->GetTextProperty();
+    p->SetFontFamilyToArial();
+    p->SetFontSize(static_cast<int>(std::lround(size)));
+    p->SetBold(bold);
+    p->SetColor(colour::text.red(), colour::text.green(), colour::text.blue());
+}
+
+std::vector<double> column(const std::vector<CurvePoint>& curve, std::size_t count, bool load) {
+    std::vector<double> v;
+    for (std::size_t i = 0; i < count && i < curve.size(); ++i) v.push_back(load ? curve[i].load : curve[i].displacement);
+    return v;
+}
+
+std::string scene_heading(const SeriesSummary& s) {
+    return s.title.empty() ? s.scene : s.title + "  (" + s.scene + ")";
+}
+
+} // namespace
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value == 0.0 ? 0.0 : value); // no "-0"
+    return text;
+}
+
+FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height)
+    : summary_(summary), window_(width, height),
+      chart_(summary.displacement_label, summary.load_label, height / 720.0) {
+    const double s = height / 720.0;
+    const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
+                                  static_cast<int>(std::lround((1.0 - band) * height))};
+    structure_ = std::make_unique<StructureView>(summary, first_step, base, structure_port, s);
+
+    title_band_->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
+    title_band_->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());
+    title_->SetInput(scene_heading(summary).c_str());
+    style(title_, 22 * s, true);
+    title_->SetPosition(16 * s, 0.11 * height * 0.52);
+    status_->SetPosition(16 * s, 0.11 * height * 0.14);
+    style(status_, 17 * s, false);
+    title_band_->AddViewProp(title_);
+    title_band_->AddViewProp(status_);
+
+    chart_area_->SetViewport(split, 0.0, 1.0, 1.0 - band);
+    chart_area_->SetBackground(1, 1, 1);
+    const auto xs = column(summary.curve, summary.curve.size(), false);
+    const auto ys = column(summary.curve, summary.curve.size(), true);
+    chart_.add({"", xs, ys, colour::curve_full, 2.0f});
+    progress_line_ = chart_.add({"", {}, {}, colour::curve_progress, 3.0f});
+    current_point_ = chart_.add({"", {}, {}, colour::current_point, 11.0f, true});
+    double x0, x1, y0, y1;
+    padded_range(xs, x0, x1);
+    padded_range(ys, y0, y1);
+    chart_.set_ranges(x0, x1, y0, y1);
+    chart_.place_in(chart_area_);
+
+    window_.add(title_band_);
+    window_.add(structure_->renderer());
+    window_.add(chart_area_);
+}
+
+FrameComposer::~FrameComposer() = default;
+
+vtkSmartPointer<vtkImageData> FrameComposer::draw(vtkUnstructuredGrid* step, std::size_t index) {
+    const CurvePoint& c = summary_.curve.at(index);
+    const std::string status = "step " + std::to_string(c.step) + " of " + std::to_string(summary_.curve.back().step) +
+                               "      " + summary_.load_label + " = " + number(c.load) + "      " +
+                               summary_.displacement_label + " = " + number(c.displacement);
+    status_->SetInput(status.c_str());
+    structure_->show(step);
+    // A line needs two points; the first step is the marker alone.
+    const std::size_t shown = index == 0 ? 0 : index + 1;
+    chart_.replace(progress_line_, column(summary_.curve, shown, false), column(summary_.curve, shown, true));
+    chart_.replace(current_point_, {c.displacement}, {c.load});
+    return window_.capture();
+}
+
+vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height) {
+    const SeriesSummary& main = *runs.front();
+    const double s = height / 720.0;
+    OffscreenWindow window(width, height);
+    vtkNew<vtkRenderer> band_area, chart_area;
+    band_area->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
+    band_area->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());
+    chart_area->SetViewport(0.0, 0.0, 1.0, 1.0 - band);
+    chart_area->SetBackground(1, 1, 1);
+    vtkNew<vtkTextActor> title;
+    title->SetInput((main.load_label + " against " + main.displacement_label + ": " + scene_heading(main)).c_str());
+    style(title, 22 * s, true);
+    title->SetPosition(16 * s, 0.11 * height * 0.35);
+    band_area->AddViewProp(title);
+
+    LoadChart chart(main.displacement_label, main.load_label, s);
+    // The main run in the progress blue, drawn last so it stays on top; the others in colours
+    // that no marker uses.
+    const Rgb others[] = {{105, 105, 105}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
+    std::vector<double> all_x, all_y;
+    for (std::size_t k = runs.size(); k-- > 0;) {
+        const auto xs = column(runs[k]->curve, runs[k]->curve.size(), false);
+        const auto ys = column(runs[k]->curve, runs[k]->curve.size(), true);
+        all_x.insert(all_x.end(), xs.begin(), xs.end());
+        all_y.insert(all_y.end(), ys.begin(), ys.end());
+        const Rgb c = k == 0 ? colour::curve_progress : others[(k - 1) % 4];
+        chart.add({runs.size() > 1 ? runs[k]->scene : "", xs, ys, c, k == 0 ? 3.0f : 2.0f});
+    }
+    // Events of the main run that explain the shape of its curve.
+    auto mark = [&](const char* label, Rgb colour, auto happened) {
+        for (const CurvePoint& c : main.curve)
+            if (happened(c)) {
+                chart.add({label, {c.displacement}, {c.load}, colour, 12.0f, true});
+                return true;
+            }
+        return false;
+    };
+    bool marked = false;
+    if (main.inelastic) marked |= mark("first yield", colour::hinge_yielding_high, [](const CurvePoint& c) { return c.hinge_count > 0; });
+    if (main.unilateral) marked |= mark("contact spreads", colour::contact_force, [](const CurvePoint& c) { return c.contact_count > 1; });
+    double x0, x1, y0, y1;
+    padded_range(all_x, x0, x1);
+    padded_range(all_y, y0, y1);
+    chart.set_ranges(x0, x1, y0, y1);
+    chart.show_legend(runs.size() > 1 || marked);
+    chart.place_in(chart_area);
+    window.add(band_area);
+    window.add(chart_area);
+    return window.capture();
+}
+
+} // namespace plastica::render

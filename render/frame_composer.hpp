@@ -1,0 +1,51 @@
+// One frame of the animation: a title band (scene, step, load and displacement), the structure
+// view on the left and the load–displacement chart on the right (the whole curve faint, the curve
+// so far, the current step marked). The window, the actors and the camera are built once; each
+// frame only swaps the step's data in.
+#pragma once
+
+#include "load_chart.hpp"
+#include "offscreen_window.hpp"
+#include "series_summary.hpp"
+#include "structure_view.hpp"
+
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+class vtkImageData;
+class vtkPolyData;
+class vtkRenderer;
+class vtkTextActor;
+class vtkUnstructuredGrid;
+
+namespace plastica::render {
+
+class FrameComposer {
+public:
+    FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height);
+    ~FrameComposer();
+
+    // Draws step `index` of the summary's curve, whose data is `step`.
+    vtkSmartPointer<vtkImageData> draw(vtkUnstructuredGrid* step, std::size_t index);
+    const std::string& gl_renderer() const { return window_.gl_renderer(); }
+
+private:
+    const SeriesSummary& summary_;
+    OffscreenWindow window_;
+    vtkNew<vtkRenderer> title_band_, chart_area_;
+    vtkNew<vtkTextActor> title_, status_;
+    std::unique_ptr<StructureView> structure_;
+    LoadChart chart_;
+    int progress_line_ = 0, current_point_ = 0;
+};
+
+// The whole load–displacement curve of one or more runs (the first is the main one, its first
+// yield and contact spreading marked), with a legend when there is more than one run.
+vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height);
+
+// "%.4g" without trailing noise.
+std::string number(double value);
+
+} // namespace plastica::render

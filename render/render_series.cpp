@@ -1,0 +1,106 @@
+#include "render_series.hpp"
+#include "animation.hpp"
+#include "contact_sheet.hpp"
+#include "frame_composer.hpp"
+#include "png_file.hpp"
+#include "render_error.hpp"
+#include "result_series.hpp"
+#include "series_summary.hpp"
+
+#include <vtkImageData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <future>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace plastica::render {
+
+namespace {
+
+std::string frame_name(int step) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.png", step);
+    return name;
+}
+
+// Frames of an earlier render (perhaps of more steps) must not mix with these.
+void clear_frames(const fs::path& folder) {
+    std::error_code ec;
+    if (fs::is_directory(folder, ec))
+        for (const auto& entry : fs::directory_iterator(folder))
+            if (entry.path().extension() == ".png" && entry.path().filename().string().rfind("frame_", 0) == 0)
+                fs::remove(entry.path(), ec);
+    fs::create_directories(folder);
+}
+
+std::vector<std::size_t> chosen_steps(std::size_t count, int every) {
+    std::vector<std::size_t> chosen;
+    for (std::size_t i = 0; i < count; i += static_cast<std::size_t>(every)) chosen.push_back(i);
+    if (chosen.back() != count - 1) chosen.push_back(count - 1);
+    return chosen;
+}
+
+} // namespace
+
+RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions& options) {
+    if (options.width < 64 || options.height < 64 || options.width > 8192 || options.height > 8192)
+        throw RenderError("image size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                          " is outside 64x64 … 8192x8192");
+    if (options.every < 1) throw RenderError("--every takes a whole number ≥ 1");
+    const ResultSeries series = open_series(folder_or_pvd);
+    const SeriesSummary summary = summarise(series, options.field);
+    std::vector<SeriesSummary> overlays;
+    for (const std::string& other : options.overlays) overlays.push_back(summarise(open_series(other), "displacement"));
+
+    RenderReport report;
+    report.output = options.output.empty() ? series.folder : options.output;
+    const fs::path out(report.output);
+    const fs::path frames = out / "frames";
+    clear_frames(frames);
+
+    vtkSmartPointer<vtkPolyData> base;
+    if (!series.base_file.empty()) base = read_base(series.base_file);
+    auto first = read_step(series.steps.front().file);
+    FrameComposer composer(summary, first, base, options.width, options.height);
+
+    const auto steps = chosen_steps(series.steps.size(), options.every);
+    ContactSheet sheet(steps.size());
+    const auto t0 = std::chrono::steady_clock::now();
+    std::future<void> encoding;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const std::size_t index = steps[k];
+        auto grid = index == 0 ? first : read_step(series.steps[index].file);
+        vtkSmartPointer<vtkImageData> image = composer.draw(grid, index);
+        if (sheet.wants(k)) sheet.keep(k, image);
+        if (encoding.valid()) encoding.get(); // one frame in flight at a time: memory stays flat
+        const std::string path = (frames / frame_name(summary.curve[index].step)).string();
+        encoding = std::async(std::launch::async, [image, path] { write_png(image, path); });
+        if (!options.quiet && (k % 25 == 0 || k + 1 == steps.size()))
+            std::cerr << "frame " << k + 1 << " of " << steps.size() << "\n";
+    }
+    if (encoding.valid()) encoding.get();
+    report.frames = static_cast<int>(steps.size());
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    report.frames_per_second = report.frames / std::max(report.seconds, 1e-9);
+    report.gl_renderer = composer.gl_renderer();
+
+    std::vector<const SeriesSummary*> runs{&summary};
+    for (const SeriesSummary& o : overlays) runs.push_back(&o);
+    write_png(draw_curve_chart(runs, options.width, options.height), (out / "chart.png").string());
+    if (auto image = sheet.compose()) write_png(image, (out / "contact_sheet.png").string());
+    if (options.animation) {
+        const AnimationResult gif = write_gif(frames.string(), (out / (summary.scene + ".gif")).string());
+        report.animation = gif.message;
+    } else {
+        report.animation = "no animation requested";
+    }
+    return report;
+}
+
+} // namespace plastica::render

@@ -1,0 +1,34 @@
+// The render stage as one call: read a result series (DESIGN §1: the VTU/PVD files are the only
+// input), draw every k-th step into frames/frame_NNNNNN.png (NNNNNN is the step number), then
+// chart.png, contact_sheet.png and <scene>.gif. Steps are read and drawn one at a time; the PNG of
+// one frame is encoded on a second thread while the next one draws.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plastica::render {
+
+struct RenderOptions {
+    std::string output;                   // folder for the pictures (default: the series folder)
+    int width = 1280, height = 720;
+    std::string field = "bending_moment"; // point or cell array colouring the structure
+    int every = 1;                        // draw every k-th step (the first and last always)
+    std::vector<std::string> overlays;    // further series whose curves join chart.png
+    bool animation = true;
+    bool quiet = false;
+};
+
+struct RenderReport {
+    int frames = 0;
+    double seconds = 0.0;       // drawing and encoding the frames
+    double frames_per_second = 0.0;
+    std::string gl_renderer;
+    std::string animation;      // the GIF's path, or why there is none
+    std::string output;         // the folder written
+};
+
+// Throws RenderError naming the file at fault; frames already written stay.
+RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions& options);
+
+} // namespace plastica::render

@@ -1,0 +1,118 @@
+#include "series_summary.hpp"
+#include "render_error.hpp"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace plastica::render {
+
+namespace {
+
+std::string array_names(vtkUnstructuredGrid* grid) {
+    std::string names;
+    for (vtkDataSetAttributes* data : {static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
+                                       static_cast<vtkDataSetAttributes*>(grid->GetCellData())})
+        for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+            if (data->GetArray(i)) names += (names.empty() ? "" : ", ") + std::string(data->GetArrayName(i));
+    return names;
+}
+
+int count_state(vtkDataArray* states, int state) {
+    int n = 0;
+    if (!states) return 0;
+    for (vtkIdType i = 0; i < states->GetNumberOfTuples(); ++i) n += states->GetComponent(i, 0) == state;
+    return n;
+}
+
+} // namespace
+
+double tuple_magnitude(vtkDataArray* array, long long i) {
+    const int c = array->GetNumberOfComponents();
+    if (c == 1) return array->GetComponent(i, 0);
+    double sum = 0.0;
+    for (int k = 0; k < c; ++k) sum += array->GetComponent(i, k) * array->GetComponent(i, k);
+    return std::sqrt(sum);
+}
+
+SeriesSummary summarise(const ResultSeries& series, const std::string& field) {
+    SeriesSummary s;
+    const double inf = std::numeric_limits<double>::infinity();
+    double b[4] = {inf, -inf, inf, -inf};
+    double range[2] = {inf, -inf};
+    for (std::size_t k = 0; k < series.steps.size(); ++k) {
+        const std::string& file = series.steps[k].file;
+        auto grid = read_step(file);
+        if (k == 0) {
+            s.scene = field_text(grid, "scene", "result");
+            s.title = field_text(grid, "title");
+            s.load_label = field_text(grid, "load_label", "load");
+            s.displacement_label = field_text(grid, "displacement_label", "control displacement");
+            s.unilateral = grid->GetPointData()->GetArray("contact_force") != nullptr;
+            s.inelastic = grid->GetCellData()->GetArray("hinge_state_i") != nullptr;
+            s.field.name = field;
+            vtkDataArray* a = grid->GetPointData()->GetArray(field.c_str());
+            if (!a) {
+                a = grid->GetCellData()->GetArray(field.c_str());
+                s.field.on_cells = a != nullptr;
+            }
+            if (!a)
+                throw RenderError(file + ": no array '" + field + "' to colour by; the series has: " + array_names(grid));
+            s.field.components = a->GetNumberOfComponents();
+        }
+        vtkDataArray* initial = grid->GetPointData()->GetArray("initial_position");
+        for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+            double p[3];
+            grid->GetPoint(i, p);
+            const double* q = initial->GetTuple3(i);
+            for (const double* xy : {static_cast<const double*>(p), q}) {
+                b[0] = std::min(b[0], xy[0]);
+                b[1] = std::max(b[1], xy[0]);
+                b[2] = std::min(b[2], xy[1]);
+                b[3] = std::max(b[3], xy[1]);
+            }
+        }
+        vtkDataArray* values = s.field.on_cells ? grid->GetCellData()->GetArray(field.c_str())
+                                                : grid->GetPointData()->GetArray(field.c_str());
+        if (!values) throw RenderError(file + ": no array '" + field + "' (present in the first step)");
+        for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i) {
+            const double v = tuple_magnitude(values, i);
+            if (!std::isfinite(v)) throw RenderError(file + ": '" + field + "' holds NaN or Inf");
+            range[0] = std::min(range[0], v);
+            range[1] = std::max(range[1], v);
+        }
+        CurvePoint c;
+        c.step = static_cast<int>(field_value(grid, "step"));
+        c.displacement = field_value(grid, "control_displacement");
+        c.load = field_value(grid, "load");
+        if (grid->GetFieldData()->GetArray("contact_count")) c.contact_count = static_cast<int>(field_value(grid, "contact_count"));
+        if (grid->GetFieldData()->GetArray("hinge_count")) c.hinge_count = static_cast<int>(field_value(grid, "hinge_count"));
+        s.curve.push_back(c);
+        if (vtkDataArray* force = grid->GetPointData()->GetArray("contact_force")) {
+            vtkDataArray* state = grid->GetPointData()->GetArray("contact");
+            for (vtkIdType i = 0; i < force->GetNumberOfTuples(); ++i)
+                if (!state || state->GetComponent(i, 0) > 0) {
+                    const double f = tuple_magnitude(force, i);
+                    s.max_contact_force = std::max(s.max_contact_force, f);
+                    s.any_contact = s.any_contact || f > 0.0;
+                }
+        }
+        for (const char* end : {"hinge_state_i", "hinge_state_j"}) {
+            vtkDataArray* st = grid->GetCellData()->GetArray(end);
+            s.any_yielding = s.any_yielding || count_state(st, 1) > 0;
+            s.any_plastic = s.any_plastic || count_state(st, 2) > 0;
+            s.any_failed = s.any_failed || count_state(st, 3) > 0;
+        }
+    }
+    std::copy(b, b + 4, s.bounds);
+    s.field_range[0] = range[0];
+    s.field_range[1] = range[1];
+    return s;
+}
+
+} // namespace plastica::render

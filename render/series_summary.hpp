@@ -1,0 +1,50 @@
+// What the whole series holds, gathered in one pass over its steps before any frame is drawn:
+// the bounds of the motion (so the camera never jumps), the load–displacement curve, the range
+// of the coloured field (so one colour means one value in every frame), and which layers the
+// scene needs at all (a base, contact arrows, plastic hinges). Only these summaries are kept,
+// so memory does not grow with the number of steps.
+#pragma once
+
+#include "result_series.hpp"
+
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+
+namespace plastica::render {
+
+struct CurvePoint {
+    int step = 0;
+    double displacement = 0.0;
+    double load = 0.0;
+    int contact_count = 0;
+    int hinge_count = 0;
+};
+
+struct ColourField {
+    std::string name;
+    bool on_cells = false; // a cell array (per element) rather than a point array
+    int components = 1;    // vectors are coloured by their magnitude
+};
+
+struct SeriesSummary {
+    std::string scene, title, load_label, displacement_label;
+    double bounds[4] = {0, 0, 0, 0}; // x min, x max, y min, y max of every deformed and initial point
+    std::vector<CurvePoint> curve;   // one point per step of the series
+    ColourField field;
+    double field_range[2] = {0, 0};
+    bool unilateral = false;         // the scene has a unilateral base (contact arrays)
+    bool any_contact = false;        // some step has a node in contact
+    double max_contact_force = 0.0;
+    bool inelastic = false;          // the scene has plastic hinges (hinge arrays)
+    bool any_yielding = false, any_plastic = false, any_failed = false;
+};
+
+// Throws RenderError naming the step file, or listing the arrays when `field` is not one of them.
+SeriesSummary summarise(const ResultSeries& series, const std::string& field);
+
+// The magnitude of tuple i of an array (its value when it has one component).
+double tuple_magnitude(vtkDataArray* array, long long i);
+
+} // namespace plastica::render

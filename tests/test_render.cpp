@@ -1,0 +1,182 @@
+// The render stage drawn for real (OSMesa, no DISPLAY) from series the engine wrote, checked by
+// the pixels of the PNGs: sizes, layers present or left out, and a chart that follows the data.
+#include "render_helpers.hpp"
+
+#include "palette.hpp"
+#include "png_file.hpp"
+#include "render_error.hpp"
+#include "render_series.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+
+using namespace plastica;
+using namespace plastica::testing;
+using namespace plastica::render;
+
+namespace {
+
+RenderOptions small(const fs::path& out, int every = 1) {
+    RenderOptions o;
+    o.output = out.string();
+    o.width = 640;
+    o.height = 360;
+    o.every = every;
+    o.animation = false;
+    o.quiet = true;
+    return o;
+}
+
+bool is(Pixel p, Rgb c) { return p.r == c.r && p.g == c.g && p.b == c.b; }
+
+// Yielding markers blend gold into orange; no colour of the cool–warm map has so little blue
+// with so much red.
+bool yielding_marker(Pixel p) { return p.r >= 240 && p.g >= 120 && p.g <= 220 && p.b <= 45; }
+
+// The structure view: left of the chart, under the title band.
+constexpr double structure_right = 0.57 * (1 - 0.25), band_bottom = 0.11;
+
+} // namespace
+
+TEST_CASE("An inelastic ring renders headless: sizes, colours, hinges, contact arrows", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_inelastic", 50, "inelastic");
+    const fs::path out = series / "pictures";
+    const RenderReport report = render_series(series.string(), small(out));
+    CHECK(report.frames == 5);
+    CHECK(report.gl_renderer.find("llvmpipe") != std::string::npos);
+    for (const char* name : {"frame_000000.png", "frame_000100.png", "frame_000200.png"})
+        REQUIRE(fs::exists(out / "frames" / name));
+    auto last = read_png((out / "frames" / "frame_000200.png").string());
+    int d[3];
+    last->GetDimensions(d);
+    CHECK(d[0] == 640);
+    CHECK(d[1] == 360);
+    // Not blank: white background, the title band and many structure colours.
+    CHECK(count_pixels(last, [](Pixel p) { return is(p, colour::background); }) > 640 * 360 / 3);
+    CHECK(count_pixels(last, [](Pixel p) { return is(p, colour::title_band); }, 0, 1, 0, band_bottom) > 640 * 30);
+    // The last step has a fully plastic hinge under the load and yielding ends elsewhere.
+    CHECK(count_pixels(last, [](Pixel p) { return is(p, colour::hinge_plastic); }, 0, structure_right, band_bottom, 1) > 20);
+    CHECK(count_pixels(last, yielding_marker, 0, structure_right, band_bottom, 1) > 20);
+    // Contact arrows sit at the base: in the lowest fifth of the picture.
+    const auto green = [](Pixel p) { return is(p, colour::contact_force); };
+    CHECK(count_pixels(last, green, 0, structure_right, 0.8, 1) > 30);
+    CHECK(count_pixels(last, green, 0, structure_right, band_bottom, 0.6) == 0);
+    // The first frame is unloaded: no hinge and no arrow.
+    auto first = read_png((out / "frames" / "frame_000000.png").string());
+    CHECK(count_pixels(first, [](Pixel p) { return is(p, colour::hinge_plastic); }, 0, structure_right, band_bottom, 1) == 0);
+    CHECK(count_pixels(first, green, 0, structure_right, band_bottom, 1) == 0);
+    // The contact sheet is a 3 × 3 grid of half-size frames.
+    auto sheet = read_png((out / "contact_sheet.png").string());
+    sheet->GetDimensions(d);
+    CHECK(d[0] == 3 * 320);
+    CHECK(d[1] == 3 * 180);
+}
+
+TEST_CASE("An elastic ring has no hinge layer and a scene without a base has no contact arrows", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path elastic = solved_series("ring_elastic", 100, "elastic");
+    render_series(elastic.string(), small(elastic / "pictures"));
+    auto frame = read_png((elastic / "pictures" / "frames" / "frame_000200.png").string());
+    CHECK(count_pixels(frame, [](Pixel p) { return is(p, colour::hinge_plastic); }) == 0);
+    CHECK(count_pixels(frame, yielding_marker) == 0);
+    CHECK(count_pixels(frame, [](Pixel p) { return is(p, colour::contact_force); }, 0, structure_right, 0.8, 1) > 30);
+
+    const fs::path bilateral = solved_series("ring_bilateral", 100, "bilateral");
+    render_series(bilateral.string(), small(bilateral / "pictures"));
+    frame = read_png((bilateral / "pictures" / "frames" / "frame_000200.png").string());
+    CHECK(count_pixels(frame, [](Pixel p) { return is(p, colour::contact_force); }) == 0);
+    CHECK(count_pixels(frame, [](Pixel p) { return is(p, colour::hinge_plastic); }) == 0);
+    CHECK(count_pixels(frame, [](Pixel p) { return is(p, colour::spring_anchor); }, 0, structure_right, band_bottom, 1) > 20);
+}
+
+TEST_CASE("The chart's curve rises where the load rises", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_elastic", 10, "chart");
+    render_series(series.string(), small(series / "pictures", 200));
+    auto chart = read_png((series / "pictures" / "chart.png").string());
+    int d[3];
+    chart->GetDimensions(d);
+    // Height of the curve's highest pixel in each column where the curve is drawn.
+    std::vector<int> heights;
+    for (int x = 0; x < d[0]; ++x) {
+        for (int y = d[1] - 1; y >= 0; --y) {
+            const auto* p = static_cast<unsigned char*>(chart->GetScalarPointer(x, y, 0));
+            if (is({p[0], p[1], p[2]}, colour::curve_progress)) {
+                heights.push_back(y);
+                break;
+            }
+        }
+    }
+    REQUIRE(heights.size() > 300u);
+    // The elastic ring's load grows with the displacement: the curve climbs over most of the
+    // chart's height and never drops by more than its own line width.
+    CHECK(heights.back() - heights.front() > d[1] / 2);
+    for (std::size_t i = 1; i < heights.size(); ++i) CHECK(heights[i] >= heights[i - 1] - 3);
+}
+
+TEST_CASE("The same frame drawn twice is the same PNG, byte for byte", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_inelastic", 100, "twice");
+    render_series(series.string(), small(series / "a"));
+    render_series(series.string(), small(series / "b"));
+    auto bytes = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    for (const char* name : {"frames/frame_000100.png", "frames/frame_000200.png", "chart.png"})
+        CHECK(bytes(series / "a" / name) == bytes(series / "b" / name));
+}
+
+TEST_CASE("A bad series is refused with the file and the reason", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_elastic", 100, "bad");
+    auto message = [&](const fs::path& target, RenderOptions o) {
+        try {
+            render_series(target.string(), o);
+        } catch (const RenderError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const RenderOptions o = small(series / "pictures");
+    SECTION("no series in the folder") {
+        CHECK_THAT(message(series / "vtu", o), Catch::Contains("expected one .pvd result series, found 0"));
+    }
+    SECTION("a colour field the series does not have") {
+        RenderOptions f = o;
+        f.field = "temperature";
+        CHECK_THAT(message(series, f), Catch::Contains("no array 'temperature'") && Catch::Contains("bending_moment"));
+    }
+    SECTION("a step file missing") {
+        fs::remove(series / "vtu" / "step_000100.vtu");
+        CHECK_THAT(message(series, o), Catch::Contains("step_000100.vtu: missing (listed in"));
+    }
+    SECTION("a truncated step file") {
+        const fs::path step = series / "vtu" / "step_000100.vtu";
+        fs::resize_file(step, fs::file_size(step) / 2);
+        CHECK_THAT(message(series, o), Catch::Contains("step_000100.vtu: unreadable"));
+    }
+    SECTION("a foreign VTU") {
+        std::ofstream(series / "vtu" / "step_000100.vtu")
+            << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\"><UnstructuredGrid>"
+               "<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\"><Points><DataArray type=\"Float32\" "
+               "NumberOfComponents=\"3\" format=\"ascii\">0 0 0</DataArray></Points><Cells>"
+               "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\"></DataArray>"
+               "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\"></DataArray>"
+               "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\"></DataArray></Cells>"
+               "</Piece></UnstructuredGrid></VTKFile>\n";
+        CHECK_THAT(message(series, o), Catch::Contains("step_000100.vtu: no point array 'displacement' (not a Plastica result)"));
+    }
+    SECTION("a PVD that is not a collection") {
+        std::ofstream(series / "ring_elastic.pvd") << "<html>not a series</html>\n";
+        CHECK_THAT(message(series, o), Catch::Contains("ring_elastic.pvd: not a ParaView collection"));
+    }
+    SECTION("an absurd picture size") {
+        RenderOptions big = o;
+        big.width = 100000;
+        CHECK_THAT(message(series, big), Catch::Contains("outside 64x64"));
+    }
+}
