@@ -95,39 +95,63 @@ vtkSmartPointer<vtkImageData> FrameComposer::draw(vtkUnstructuredGrid* step, std
     return window_.capture();
 }
 
-vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height) {
-    const SeriesSummary& main = *runs.front();
-    const double s = height / 720.0;
-    OffscreenWindow window(width, height);
+vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
+    const double s = f.height / 720.0;
+    OffscreenWindow window(f.width, f.height);
     vtkNew<vtkRenderer> band_area, chart_area;
     band_area->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
     band_area->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());
     chart_area->SetViewport(0.0, 0.0, 1.0, 1.0 - band);
     chart_area->SetBackground(1, 1, 1);
     vtkNew<vtkTextActor> title;
-    title->SetInput((main.load_label + " against " + main.displacement_label + ": " + scene_heading(main)).c_str());
+    title->SetInput(f.title.c_str());
     style(title, 22 * s, true);
-    title->SetPosition(16 * s, 0.11 * height * 0.35);
+    title->SetPosition(16 * s, 0.11 * f.height * 0.35);
     band_area->AddViewProp(title);
 
-    LoadChart chart(main.displacement_label, main.load_label, s);
+    LoadChart chart(f.x_label, f.y_label, s);
+    std::vector<double> all_x, all_y;
+    for (const ChartSeries& series : f.series) {
+        all_x.insert(all_x.end(), series.x.begin(), series.x.end());
+        all_y.insert(all_y.end(), series.y.begin(), series.y.end());
+        chart.add(series);
+    }
+    if (f.axes_through_zero) {
+        all_x.push_back(0.0);
+        all_y.push_back(0.0);
+    }
+    double x0, x1, y0, y1;
+    padded_range(all_x, x0, x1);
+    padded_range(all_y, y0, y1);
+    chart.set_ranges(x0, x1, y0, y1);
+    chart.show_legend(f.legend);
+    chart.place_in(chart_area);
+    window.add(band_area);
+    window.add(chart_area);
+    return window.capture();
+}
+
+vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height) {
+    const SeriesSummary& main = *runs.front();
+    ChartFigure f;
+    f.title = main.load_label + " against " + main.displacement_label + ": " + scene_heading(main);
+    f.x_label = main.displacement_label;
+    f.y_label = main.load_label;
+    f.width = width;
+    f.height = height;
     // The main run in the progress blue, drawn last so it stays on top; the others in colours
     // that no marker uses.
     const Rgb others[] = {{105, 105, 105}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
-    std::vector<double> all_x, all_y;
     for (std::size_t k = runs.size(); k-- > 0;) {
-        const auto xs = column(runs[k]->curve, runs[k]->curve.size(), false);
-        const auto ys = column(runs[k]->curve, runs[k]->curve.size(), true);
-        all_x.insert(all_x.end(), xs.begin(), xs.end());
-        all_y.insert(all_y.end(), ys.begin(), ys.end());
         const Rgb c = k == 0 ? colour::curve_progress : others[(k - 1) % 4];
-        chart.add({runs.size() > 1 ? runs[k]->scene : "", xs, ys, c, k == 0 ? 3.0f : 2.0f});
+        f.series.push_back({runs.size() > 1 ? runs[k]->scene : "", column(runs[k]->curve, runs[k]->curve.size(), false),
+                            column(runs[k]->curve, runs[k]->curve.size(), true), c, k == 0 ? 3.0f : 2.0f});
     }
     // Events of the main run that explain the shape of its curve.
     auto mark = [&](const char* label, Rgb colour, auto happened) {
         for (const CurvePoint& c : main.curve)
             if (happened(c)) {
-                chart.add({label, {c.displacement}, {c.load}, colour, 12.0f, true});
+                f.series.push_back({label, {c.displacement}, {c.load}, colour, 12.0f, true});
                 return true;
             }
         return false;
@@ -135,15 +159,8 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     bool marked = false;
     if (main.inelastic) marked |= mark("first yield", colour::hinge_yielding_high, [](const CurvePoint& c) { return c.hinge_count > 0; });
     if (main.unilateral) marked |= mark("contact spreads", colour::contact_force, [](const CurvePoint& c) { return c.contact_count > 1; });
-    double x0, x1, y0, y1;
-    padded_range(all_x, x0, x1);
-    padded_range(all_y, y0, y1);
-    chart.set_ranges(x0, x1, y0, y1);
-    chart.show_legend(runs.size() > 1 || marked);
-    chart.place_in(chart_area);
-    window.add(band_area);
-    window.add(chart_area);
-    return window.capture();
+    f.legend = runs.size() > 1 || marked;
+    return draw_chart(f);
 }
 
 } // namespace plastica::render

@@ -41,6 +41,16 @@ private:
     int progress_line_ = 0, current_point_ = 0;
 };
 
+// A chart on its own: a title band over a chart of the given series.
+struct ChartFigure {
+    std::string title, x_label, y_label;
+    std::vector<ChartSeries> series;
+    bool legend = false;
+    bool axes_through_zero = true; // ranges include the origin
+    int width = 1280, height = 720;
+};
+vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& figure);
+
 // The whole load–displacement curve of one or more runs (the first is the main one, its first
 // yield and contact spreading marked), with a legend when there is more than one run.
 vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height);

@@ -110,6 +110,21 @@ TEST_CASE("plastica section writes the capacity and moment-curvature curves", "[
     CHECK(fs::exists(out / "ring_moment_curvature.csv"));
     // Mp of the ring's 10-fibre rectangle: fy·b·h²/4 = 10.0 (exact for an even fibre count).
     CHECK_THAT(r.output, Catch::Contains("Mp(0) = 10"));
+    CHECK(fs::exists(out / "ring_capacity.png"));
+    CHECK(fs::exists(out / "ring_moment_curvature.png"));
+}
+
+TEST_CASE("plastica section draws the most loaded end's path from a run, and refuses a missing one", "[cli][render]") {
+    const fs::path run = scratch("section_run");
+    REQUIRE(plastica("run " + model("ring_inelastic.toml") + " -o " + run.string() + " --every 50 --no-render -q").code == 0);
+    const fs::path out = scratch("section_path");
+    const Result r = plastica("section " + model("ring_inelastic.toml") + " -o " + out.string() + " --series " + run.string());
+    CHECK(r.code == 0);
+    CHECK(fs::exists(out / "ring_capacity.png"));
+    const Result missing = plastica("section " + model("ring_inelastic.toml") + " -o " + out.string() + " --series " +
+                                    (run / "nothing").string());
+    CHECK(missing.code == 2);
+    CHECK_THAT(missing.output, Catch::Contains("nothing: missing"));
 }
 
 TEST_CASE("plastica run draws the series and plastica render redraws it with overlays and a GIF", "[cli][render]") {

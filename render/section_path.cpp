@@ -1,0 +1,35 @@
+#include "section_path.hpp"
+#include "render_error.hpp"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkUnstructuredGrid.h>
+
+namespace plastica::render {
+
+SectionPath most_loaded_end(const ResultSeries& series) {
+    auto last = read_step(series.steps.back().file);
+    vtkDataArray* use[2] = {last->GetCellData()->GetArray("utilisation_i"), last->GetCellData()->GetArray("utilisation_j")};
+    if (!use[0] || !use[1]) throw RenderError(series.steps.back().file + ": no plastic hinges (an elastic scene)");
+    vtkIdType element = 0;
+    int end = 0;
+    double most = -1.0;
+    for (vtkIdType e = 0; e < last->GetNumberOfCells(); ++e)
+        for (int k = 0; k < 2; ++k)
+            if (use[k]->GetComponent(e, 0) > most) most = use[k]->GetComponent(e, 0), element = e, end = k;
+    SectionPath path;
+    path.where = "element " + std::to_string(element + 1) + ", end " + (end == 0 ? "i" : "j");
+    const char* moment = end == 0 ? "moment_i" : "moment_j";
+    for (const SeriesStep& step : series.steps) {
+        auto grid = read_step(step.file);
+        vtkDataArray* n = grid->GetCellData()->GetArray("axial_force");
+        vtkDataArray* m = grid->GetCellData()->GetArray(moment);
+        if (!n || !m || element >= n->GetNumberOfTuples())
+            throw RenderError(step.file + ": no 'axial_force' or '" + moment + "' for element " + std::to_string(element + 1));
+        path.axial_force.push_back(n->GetComponent(element, 0));
+        path.moment.push_back(m->GetComponent(element, 0));
+    }
+    return path;
+}
+
+} // namespace plastica::render
