@@ -5,7 +5,7 @@ JOBS       ?= $(shell nproc)
 SCENE      ?= models/ring_inelastic.toml
 CMAKE_ARGS ?=
 
-.PHONY: run test deps build bench test-sanitize clean
+.PHONY: run test deps build bench test-sanitize update-snapshots clean
 
 deps:
 	@./scripts/install-deps.sh
@@ -37,6 +37,11 @@ bench: deps
 	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DPLASTICA_BENCH=ON -DPLASTICA_TESTS=OFF
 	cmake --build build-bench -j $(JOBS) --target plastica_bench
 	build-bench/bench/plastica_bench
+
+# Rewrites the stored snapshot references on purpose (review the new pictures before committing).
+update-snapshots: build
+	rm -rf tests/snapshots
+	scripts/render-snapshots.sh $(BUILD)/cli/plastica tests/snapshots
 
 clean:
 	rm -rf $(BUILD) build-sanitize build-bench

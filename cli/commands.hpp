@@ -14,5 +14,6 @@ using Args = std::vector<std::string>;
 int run_command(const Args& args);
 int section_command(const Args& args);
 int render_command(const Args& args);
+int compare_command(const Args& args);
 
 } // namespace plastica::cli

@@ -14,6 +14,7 @@ const char* usage = R"(Usage: plastica COMMAND [options]
 Commands:
   run SCENE        solve a scene: curve.csv, run.json, VTU/PVD series, and pictures
   render SERIES    draw a result folder: frames, chart, contact sheet, animation
+  compare A REF    rendered pictures against stored references (exit 1 when they differ)
   section SCENE    moment-curvature and N-M capacity curves of a scene's sections
 
 Run 'plastica COMMAND --help' for the options of a command.
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
     mallopt(M_TOP_PAD, 64 << 20);
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"render", render_command}, {"section", section_command}};
+        {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"section", section_command}};
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
         std::cout << usage;
         return argc < 2 ? bad_input : ok;

@@ -3,6 +3,7 @@
 #include "render_error.hpp"
 
 #include <iostream>
+#include <sstream>
 
 namespace plastica::cli {
 
@@ -11,6 +12,8 @@ void add_render_options(po::options_description& options) {
         ("size", po::value<std::string>()->default_value("1280x720"), "picture size WIDTHxHEIGHT in pixels")
         ("field", po::value<std::string>()->default_value("bending_moment"), "point or cell array that colours the structure")
         ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
+        ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
+        ("hide", po::value<std::string>(), "leave out layers: initial,hinges,contact")
         ("no-animation", "PNG frames only, no GIF");
 }
 
@@ -30,6 +33,26 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
     options.field = vm["field"].as<std::string>();
     if (vm.count("overlay")) options.overlays = vm["overlay"].as<std::vector<std::string>>();
     options.animation = vm.count("no-animation") == 0;
+    auto split = [](const std::string& text) {
+        std::vector<std::string> items;
+        std::stringstream in(text);
+        for (std::string item; std::getline(in, item, ',');)
+            if (!item.empty()) items.push_back(item);
+        return items;
+    };
+    if (vm.count("hide")) options.hide = split(vm["hide"].as<std::string>());
+    if (vm.count("steps")) {
+        try {
+            for (const std::string& s : split(vm["steps"].as<std::string>())) {
+                std::size_t used = 0;
+                options.steps.push_back(std::stoi(s, &used));
+                if (used != s.size()) throw std::invalid_argument(s);
+            }
+        } catch (const std::exception&) {
+            std::cerr << "plastica: --steps takes step numbers separated by commas, e.g. 0,104,200\n";
+            return bad_input;
+        }
+    }
     return std::nullopt;
 }
 

@@ -6,6 +6,7 @@
 #include <vtkTextProperty.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -31,6 +32,10 @@ std::vector<double> column(const std::vector<CurvePoint>& curve, std::size_t cou
     return v;
 }
 
+// Text and line sizes are set for 1280 × 720 and scale with the picture; a narrower picture
+// scales by its width so that the legend column still holds its text.
+double text_scale(int width, int height) { return std::min(height / 720.0, width / 1280.0); }
+
 std::string scene_heading(const SeriesSummary& s) {
     return s.title.empty() ? s.scene : s.title + "  (" + s.scene + ")";
 }
@@ -43,13 +48,14 @@ std::string number(double value) {
     return text;
 }
 
-FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height)
+FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
+                             const Layers& layers)
     : summary_(summary), window_(width, height),
-      chart_(summary.displacement_label, summary.load_label, height / 720.0) {
-    const double s = height / 720.0;
+      chart_(summary.displacement_label, summary.load_label, text_scale(width, height)) {
+    const double s = text_scale(width, height);
     const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
                                   static_cast<int>(std::lround((1.0 - band) * height))};
-    structure_ = std::make_unique<StructureView>(summary, first_step, base, structure_port, s);
+    structure_ = std::make_unique<StructureView>(summary, first_step, base, structure_port, s, layers);
 
     title_band_->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
     title_band_->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());
@@ -96,7 +102,7 @@ vtkSmartPointer<vtkImageData> FrameComposer::draw(vtkUnstructuredGrid* step, std
 }
 
 vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
-    const double s = f.height / 720.0;
+    const double s = text_scale(f.width, f.height);
     OffscreenWindow window(f.width, f.height);
     vtkNew<vtkRenderer> band_area, chart_area;
     band_area->SetViewport(0.0, 1.0 - band, 1.0, 1.0);

@@ -24,7 +24,8 @@ namespace plastica::render {
 
 class FrameComposer {
 public:
-    FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height);
+    FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
+                  const Layers& layers = {});
     ~FrameComposer();
 
     // Draws step `index` of the summary's curve, whose data is `step`.

@@ -11,6 +11,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -39,8 +40,20 @@ void clear_frames(const fs::path& folder) {
     fs::create_directories(folder);
 }
 
-std::vector<std::size_t> chosen_steps(std::size_t count, int every) {
+std::vector<std::size_t> chosen_steps(const SeriesSummary& summary, const RenderOptions& options) {
     std::vector<std::size_t> chosen;
+    if (!options.steps.empty()) {
+        for (int step : options.steps) {
+            const auto at = std::find_if(summary.curve.begin(), summary.curve.end(), [step](const CurvePoint& c) { return c.step == step; });
+            if (at == summary.curve.end()) throw RenderError("step " + std::to_string(step) + " is not in the series");
+            chosen.push_back(static_cast<std::size_t>(at - summary.curve.begin()));
+        }
+        std::sort(chosen.begin(), chosen.end());
+        chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+        return chosen;
+    }
+    const std::size_t count = summary.curve.size();
+    const int every = options.every;
     for (std::size_t i = 0; i < count; i += static_cast<std::size_t>(every)) chosen.push_back(i);
     if (chosen.back() != count - 1) chosen.push_back(count - 1);
     return chosen;
@@ -67,9 +80,16 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     vtkSmartPointer<vtkPolyData> base;
     if (!series.base_file.empty()) base = read_base(series.base_file);
     auto first = read_step(series.steps.front().file);
-    FrameComposer composer(summary, first, base, options.width, options.height);
+    Layers layers;
+    for (const std::string& name : options.hide) {
+        if (name == "initial") layers.initial_shape = false;
+        else if (name == "hinges") layers.hinges = false;
+        else if (name == "contact") layers.contact = false;
+        else throw RenderError("--hide takes initial, hinges or contact (got '" + name + "')");
+    }
+    FrameComposer composer(summary, first, base, options.width, options.height, layers);
 
-    const auto steps = chosen_steps(series.steps.size(), options.every);
+    const auto steps = chosen_steps(summary, options);
     ContactSheet sheet(steps.size());
     const auto t0 = std::chrono::steady_clock::now();
     std::future<void> encoding;

@@ -14,6 +14,8 @@ struct RenderOptions {
     int width = 1280, height = 720;
     std::string field = "bending_moment"; // point or cell array colouring the structure
     int every = 1;                        // draw every k-th step (the first and last always)
+    std::vector<int> steps;               // draw exactly these step numbers instead (snapshots)
+    std::vector<std::string> hide;        // layers left out: initial, hinges, contact
     std::vector<std::string> overlays;    // further series whose curves join chart.png
     bool animation = true;
     bool quiet = false;

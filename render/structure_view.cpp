@@ -70,8 +70,9 @@ std::string readable(std::string name) {
 }
 
 StructureView::StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base,
-                             const Viewport& viewport, double text_scale)
-    : summary_(summary), viewport_(viewport) {
+                             const Viewport& viewport, double text_scale, const Layers& layers)
+    : summary_(summary), viewport_(viewport), show_hinges_(summary.inelastic && layers.hinges),
+      show_contact_(summary.any_contact && layers.contact) {
     renderer_->SetViewport(viewport.x0, viewport.y0, viewport.x1, viewport.y1);
     renderer_->SetBackground(colour::background.red(), colour::background.green(), colour::background.blue());
     has_base_ = base && base->GetNumberOfLines() > 0;
@@ -111,13 +112,13 @@ StructureView::StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* 
     outline->GetMapper()->ScalarVisibilityOff();
     outline->GetProperty()->SetColor(colour::outline.red(), colour::outline.green(), colour::outline.blue());
 
-    add_initial_shape(first_step);
+    if (layers.initial_shape) add_initial_shape(first_step);
     if (has_base_ || has_anchors_) add_base(base);
     renderer_->AddActor(outline);
     renderer_->AddActor(shape);
     for (FlatMarks* m : {&base_, &anchors_, &contact_, &hinge_under_, &hinge_, &hinge_failed_}) renderer_->AddViewProp(m->prop());
     add_colour_bar(text_scale);
-    add_legend(text_scale);
+    add_legend(text_scale, layers);
 }
 
 StructureView::~StructureView() = default;
@@ -129,7 +130,7 @@ void StructureView::fix_camera() {
     ribbon_width_ = 0.012 * size;
     double box[4] = {b[0] - 0.04 * size, b[1] + 0.04 * size, b[2] - 0.04 * size, b[3] + 0.04 * size};
     // Room under the base for the contact arrows (their tips touch the structure) and hatching.
-    if (summary_.any_contact && summary_.max_contact_force > 0) {
+    if (show_contact_ && summary_.max_contact_force > 0) {
         arrow_scale_ = 0.14 * size / summary_.max_contact_force;
         box[2] -= 0.14 * size;
     }
@@ -236,18 +237,18 @@ void StructureView::add_colour_bar(double text_scale) {
     renderer_->AddViewProp(colour_bar_);
 }
 
-void StructureView::add_legend(double text_scale) {
+void StructureView::add_legend(double text_scale, const Layers& layers) {
     struct Entry { Rgb colour; double radius; bool cross; bool arrow; std::string text; bool outlined = false; };
     std::vector<Entry> entries;
-    entries.push_back({colour::initial_shape, 0, false, false, "initial shape"});
+    if (layers.initial_shape) entries.push_back({colour::initial_shape, 0, false, false, "initial shape"});
     if (has_anchors_) entries.push_back({colour::spring_anchor, 4, false, false, "spring anchor"});
-    if (summary_.inelastic && summary_.any_yielding)
+    if (show_hinges_ && summary_.any_yielding)
         entries.push_back({colour::hinge_yielding_high, 5, false, false, "yielding end"});
-    if (summary_.inelastic && summary_.any_plastic)
+    if (show_hinges_ && summary_.any_plastic)
         entries.push_back({colour::hinge_plastic, 6, false, false, "fully plastic end", true});
-    if (summary_.inelastic && summary_.any_failed)
+    if (show_hinges_ && summary_.any_failed)
         entries.push_back({colour::hinge_failed, 6, true, false, "failed fibres"});
-    if (summary_.any_contact)
+    if (show_contact_)
         entries.push_back({colour::contact_force, 0, false, true, "contact force"});
     const double s = text_scale;
     const double x = viewport_.width_px * (1.0 - side_column + 0.03);
@@ -276,7 +277,7 @@ void StructureView::add_legend(double text_scale) {
         notes_.push_back(text);
         y -= 26 * s;
     }
-    if (summary_.any_contact) {
+    if (show_contact_) {
         auto note = vtkSmartPointer<vtkTextActor>::New();
         const std::string text = "longest arrow: " + format("%.4g", summary_.max_contact_force) + "\n(largest in the run)";
         note->SetInput(text.c_str());
@@ -297,7 +298,7 @@ void StructureView::show(vtkUnstructuredGrid* step) {
 
 void StructureView::draw_contact_forces(vtkUnstructuredGrid* step) {
     contact_.clear();
-    if (!summary_.any_contact) return;
+    if (!show_contact_) return;
     vtkDataArray* force = step->GetPointData()->GetArray("contact_force");
     vtkDataArray* state = step->GetPointData()->GetArray("contact");
     if (!force) return;
@@ -319,7 +320,7 @@ void StructureView::draw_hinges(vtkUnstructuredGrid* step) {
     hinge_.clear();
     hinge_under_.clear();
     hinge_failed_.clear();
-    if (!summary_.inelastic) return;
+    if (!show_hinges_) return;
     vtkDataArray* states[2] = {step->GetCellData()->GetArray("hinge_state_i"), step->GetCellData()->GetArray("hinge_state_j")};
     vtkDataArray* use[2] = {step->GetCellData()->GetArray("utilisation_i"), step->GetCellData()->GetArray("utilisation_j")};
     if (!states[0] || !states[1] || !use[0] || !use[1]) return;

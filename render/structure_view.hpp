@@ -31,11 +31,16 @@ struct Viewport {
     int width_px, height_px;
 };
 
+// Layers a user may leave out (`--hide`); those a scene does not need are left out anyway.
+struct Layers {
+    bool initial_shape = true, hinges = true, contact = true;
+};
+
 class StructureView {
 public:
     // first_step gives the initial shape; base may be null.
     StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base,
-                  const Viewport& viewport, double text_scale);
+                  const Viewport& viewport, double text_scale, const Layers& layers = {});
     ~StructureView();
 
     vtkRenderer* renderer() { return renderer_; }
@@ -46,13 +51,14 @@ private:
     void add_initial_shape(vtkUnstructuredGrid* first_step);
     void add_base(vtkPolyData* base);
     void add_colour_bar(double text_scale);
-    void add_legend(double text_scale);
+    void add_legend(double text_scale, const Layers& layers);
     void draw_contact_forces(vtkUnstructuredGrid* step);
     void draw_hinges(vtkUnstructuredGrid* step);
     double pixels(double n) const { return n * world_per_pixel_; }
 
     const SeriesSummary& summary_;
     Viewport viewport_;
+    bool show_hinges_, show_contact_;
     vtkNew<vtkRenderer> renderer_;
     vtkNew<vtkLookupTable> colours_;
     vtkNew<vtkGeometryFilter> geometry_;

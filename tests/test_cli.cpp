@@ -162,3 +162,25 @@ TEST_CASE("plastica render refuses bad input with exit 2 and the reason", "[cli]
     CHECK(size.code == 2);
     CHECK_THAT(size.output, Catch::Contains("--size takes WIDTHxHEIGHT"));
 }
+
+TEST_CASE("plastica compare: same pictures pass, a missing picture fails, a size mismatch is bad input", "[cli][compare]") {
+    const fs::path references = fs::path(PLASTICA_SOURCE_DIR) / "tests" / "snapshots" / "ring_elastic";
+    const Result same = plastica("compare " + references.string() + " " + references.string());
+    CHECK(same.code == 0);
+    CHECK_THAT(same.output, Catch::Contains("all 5 images match"));
+
+    const fs::path copy = scratch("compare_copy");
+    fs::copy(references, copy, fs::copy_options::recursive);
+    fs::remove(copy / "frames" / "frame_000117.png");
+    const Result missing = plastica("compare " + copy.string() + " " + references.string());
+    CHECK(missing.code == 1);
+    CHECK_THAT(missing.output, Catch::Contains("frames/frame_000117.png") && Catch::Contains("missing in"));
+
+    const Result sizes = plastica("compare " + (references / "contact_sheet.png").string() + " " + (references / "chart.png").string());
+    CHECK(sizes.code == 2);
+    CHECK_THAT(sizes.output, Catch::Contains("size mismatch, 960x540 against the reference's 640x360"));
+
+    const Result unreadable = plastica("compare " + (copy / "nothing.png").string() + " " + (references / "chart.png").string());
+    CHECK(unreadable.code == 2);
+    CHECK_THAT(unreadable.output, Catch::Contains("nothing.png: missing"));
+}
