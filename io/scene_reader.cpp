@@ -1,4 +1,5 @@
 #include "scene_reader.hpp"
+#include "node_index.hpp"
 
 #include "toml_table_reader.hpp"
 
@@ -241,11 +242,11 @@ private:
 
     // Adds a node, or returns the one already at that point (generators share their ends).
     int add_node(double x, double y) {
-        for (std::size_t k = 0; k < model_.nodes.size(); ++k)
-            if (std::hypot(model_.nodes[k].x - x, model_.nodes[k].y - y) <= merge_tolerance(x, y))
-                return static_cast<int>(k);
+        if (const int k = node_index_.find(x, y, merge_tolerance(x, y)); k >= 0) return k;
         model_.nodes.push_back({x, y});
-        return static_cast<int>(model_.nodes.size()) - 1;
+        const int index = static_cast<int>(model_.nodes.size()) - 1;
+        node_index_.add(x, y, index);
+        return index;
     }
     double merge_tolerance(double x, double y) const {
         return 1e-9 * std::max({1.0, std::abs(x), std::abs(y), size_scale_});
@@ -265,11 +266,12 @@ private:
             const int id = r.integer("id", 0, 1'000'000'000);
             if (node_ids_.count(id)) r.fail("id", "node id " + std::to_string(id) + " is used twice");
             const double x = r.number("x"), y = r.number("y");
-            for (const auto& [other, index] : node_ids_)
-                if (std::hypot(model_.nodes[index].x - x, model_.nodes[index].y - y) <= merge_tolerance(x, y))
-                    r.fail("id", "node " + std::to_string(id) + " lies on node " + std::to_string(other));
+            if (const int k = node_index_.find(x, y, merge_tolerance(x, y)); k >= 0)
+                for (const auto& [other, index] : node_ids_)
+                    if (index == k) r.fail("id", "node " + std::to_string(id) + " lies on node " + std::to_string(other));
             model_.nodes.push_back({x, y});
             node_ids_[id] = static_cast<int>(model_.nodes.size()) - 1;
+            node_index_.add(x, y, node_ids_[id]);
             r.finish({"id", "x", "y"});
         }
     }
@@ -374,9 +376,7 @@ private:
         return node_at(r, at_key, p);
     }
     int node_at(TomlTableReader& r, const std::string& key, const std::array<double, 2>& p) {
-        for (std::size_t k = 0; k < model_.nodes.size(); ++k)
-            if (std::hypot(model_.nodes[k].x - p[0], model_.nodes[k].y - p[1]) <= 1e-6 * size_scale_)
-                return static_cast<int>(k);
+        if (const int k = node_index_.find(p[0], p[1], 1e-6 * size_scale_); k >= 0) return k;
         std::ostringstream s;
         s << "no node at [" << p[0] << ", " << p[1] << "]";
         r.fail(key, s.str());
@@ -590,6 +590,7 @@ private:
     Model model_;
     std::map<std::string, Material> materials_;
     std::map<std::string, int> section_index_;
+    NodeIndex node_index_;
     std::map<int, int> node_ids_;
     std::map<std::string, std::vector<int>> groups_;
     double size_scale_ = 0.0;
