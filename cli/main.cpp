@@ -26,10 +26,11 @@ Exit codes: 0 success, 1 comparison failed, 2 bad input, 3 analysis stopped earl
 
 int main(int argc, char** argv) {
     using namespace plastica::cli;
-    // VTK's XML writer allocates and frees large buffers for every file; without this glibc
-    // hands them back to the kernel each time and a 200-step series spends most of its time
-    // in brk and page faults.
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    // VTK's XML writer allocates and frees large buffers for every file, and Eigen's LDLᵀ its
+    // workspace for every factorisation; without this glibc maps them fresh (or hands them back
+    // to the kernel) each time, and a run spends much of its time in page faults.
+    mallopt(M_MMAP_THRESHOLD, 256 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
     mallopt(M_TOP_PAD, 64 << 20);
     const std::map<std::string, int (*)(const Args&)> commands{
         {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"section", section_command}};

@@ -17,6 +17,10 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
         ny_tension_ += steel.fy * f.area;
     }
     ny_compression_ = ny_tension_;
+    // moment_capacity scans the fibres from the bottom; it runs at every hinge evaluation.
+    by_height_.resize(fibres_.size());
+    std::iota(by_height_.begin(), by_height_.end(), 0);
+    std::sort(by_height_.begin(), by_height_.end(), [&](std::size_t a, std::size_t b) { return fibres_[a].y < fibres_[b].y; });
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
 }
@@ -109,10 +113,7 @@ double FibreSection::moment_capacity(double N, double sign) const {
     // tension (+fy) and those above in compression (−fy); the fibre the axis crosses carries
     // whatever stress balances N. Fibres are scanned from the bottom.
     if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
-    std::vector<std::size_t> order(fibres_.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return fibres_[a].y < fibres_[b].y; });
+    const std::vector<std::size_t>& order = by_height_;
     const double below_sign = sign > 0.0 ? 1.0 : -1.0;
     // N(k) with fibres [0, k) at below_sign·fy and (k, n) at −below_sign·fy, fibre k partial.
     double below = 0.0;

@@ -78,6 +78,7 @@ private:
     };
     SectionSpec spec_; // kept to rebuild an unstressed copy
     std::vector<FibrePoint> fibres_;
+    std::vector<std::size_t> by_height_; // fibre indices from the lowest y up
     double E_ = 0.0;
     double ea0_ = 0.0, ei0_ = 0.0;
     double ny_tension_ = 0.0, ny_compression_ = 0.0;
