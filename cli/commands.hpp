@@ -15,5 +15,7 @@ int run_command(const Args& args);
 int section_command(const Args& args);
 int render_command(const Args& args);
 int compare_command(const Args& args);
+int study_command(const Args& args);
+int stability_command(const Args& args);
 
 } // namespace plastica::cli

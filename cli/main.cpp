@@ -15,6 +15,8 @@ Commands:
   run SCENE        solve a scene: curve.csv, run.json, VTU/PVD series, and pictures
   render SERIES    draw a result folder: frames, chart, contact sheet, animation
   compare A REF    rendered pictures against stored references (exit 1 when they differ)
+  study SCENE      error against run time over element, fibre and increment ladders
+  stability        the sweep of stiff and extreme cases, each against its expected outcome
   section SCENE    moment-curvature and N-M capacity curves of a scene's sections
 
 Run 'plastica COMMAND --help' for the options of a command.
@@ -33,7 +35,7 @@ int main(int argc, char** argv) {
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     mallopt(M_TOP_PAD, 64 << 20);
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"section", section_command}};
+        {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"study", study_command}, {"stability", stability_command}, {"section", section_command}};
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
         std::cout << usage;
         return argc < 2 ? bad_input : ok;

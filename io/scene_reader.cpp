@@ -582,7 +582,10 @@ private:
         model_.report.load_scale = r.positive_or("load_scale", 1.0);
         model_.report.load_label = r.string_or("load_label", model_.report.load_label);
         model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
-        r.finish({"load_scale", "load_label", "displacement_label"});
+        model_.report.exact = r.string_or("exact", "");
+        if (!model_.report.exact.empty() && model_.report.exact != "cantilever_tip_load")
+            r.fail("exact", "the closed forms known are: cantilever_tip_load");
+        r.finish({"load_scale", "load_label", "displacement_label", "exact"});
     }
 
     const toml::table& root_;

@@ -122,13 +122,27 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
         all_y.insert(all_y.end(), series.y.begin(), series.y.end());
         chart.add(series);
     }
-    if (f.axes_through_zero) {
-        all_x.push_back(0.0);
-        all_y.push_back(0.0);
-    }
     double x0, x1, y0, y1;
-    padded_range(all_x, x0, x1);
-    padded_range(all_y, y0, y1);
+    if (f.log_scale) {
+        // A factor of two of room around the positive data, on both axes.
+        auto span = [](const std::vector<double>& v, double& lo, double& hi) {
+            lo = 1e300, hi = 0;
+            for (double x : v)
+                if (x > 0 && std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+            if (hi <= 0) lo = 1, hi = 10;
+            lo /= 2, hi *= 2;
+        };
+        span(all_x, x0, x1);
+        span(all_y, y0, y1);
+        chart.set_log_scale();
+    } else {
+        if (f.axes_through_zero) {
+            all_x.push_back(0.0);
+            all_y.push_back(0.0);
+        }
+        padded_range(all_x, x0, x1);
+        padded_range(all_y, y0, y1);
+    }
     chart.set_ranges(x0, x1, y0, y1);
     chart.show_legend(f.legend);
     chart.place_in(chart_area);

@@ -48,6 +48,7 @@ struct ChartFigure {
     std::vector<ChartSeries> series;
     bool legend = false;
     bool axes_through_zero = true; // ranges include the origin
+    bool log_scale = false;        // both axes logarithmic (error against time)
     int width = 1280, height = 720;
 };
 vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& figure);

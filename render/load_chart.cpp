@@ -111,6 +111,11 @@ void LoadChart::set_ranges(double x0, double x1, double y0, double y1) {
 
 void LoadChart::show_legend(bool show) { chart_->SetShowLegend(show); }
 
+void LoadChart::set_log_scale() {
+    chart_->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true);
+    chart_->GetAxis(vtkAxis::LEFT)->SetLogScale(true);
+}
+
 void LoadChart::place_in(vtkRenderer* renderer) { renderer->AddViewProp(actor_); }
 
 void padded_range(const std::vector<double>& values, double& lo, double& hi) {

@@ -184,3 +184,22 @@ TEST_CASE("plastica compare: same pictures pass, a missing picture fails, a size
     CHECK(unreadable.code == 2);
     CHECK_THAT(unreadable.output, Catch::Contains("nothing.png: missing"));
 }
+
+TEST_CASE("plastica study and plastica stability write their tables and charts", "[cli][study]") {
+    const fs::path out = scratch("study");
+    const Result study = plastica("study " + model("cantilever_tip_load.toml") + " --vary elements=4,8,16 -o " + out.string());
+    CHECK(study.code == 0);
+    CHECK_THAT(study.output, Catch::Contains("errors against exact: cantilever_tip_load"));
+    CHECK_THAT(study.output, Catch::Contains("observed order of convergence in elements"));
+    CHECK(fs::exists(out / "study.csv"));
+    CHECK(fs::exists(out / "study.png"));
+    const Result bad = plastica("study " + model("ring_elastic.toml") + " --vary elements=ten,20 -o " + out.string());
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("'ten' is not a number"));
+
+    const fs::path table = scratch("stability");
+    const Result stability = plastica("stability -o " + table.string());
+    CHECK(stability.code == 0);
+    CHECK_THAT(stability.output, Catch::Contains("every case behaved as expected"));
+    CHECK(fs::exists(table / "stability.csv"));
+}

@@ -106,6 +106,7 @@ struct ReportSpec {
     double load_scale = 1.0; // reported load = load_scale * λ * ‖reference load‖ (symmetry)
     std::string load_label = "load";                         // axis and title names in pictures
     std::string displacement_label = "control displacement";
+    std::string exact;  // a closed form this scene has ("cantilever_tip_load"), for `plastica study`
 };
 
 struct Model {

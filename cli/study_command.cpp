@@ -1,0 +1,151 @@
+// plastica study: error against run time over ladders of elements, fibres and increments;
+// study.csv, a table on stdout and study.png (log–log error against wall time).
+#include "commands.hpp"
+#include "options.hpp"
+#include "output_folder.hpp"
+
+#include "frame_composer.hpp"
+#include "png_file.hpp"
+#include "render_error.hpp"
+#include "scene_error.hpp"
+#include "scene_reader.hpp"
+#include "study.hpp"
+#include "study_error.hpp"
+
+#include <vtkImageData.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace plastica::cli {
+
+namespace {
+
+std::vector<double> numbers(const std::string& text, const std::string& what) {
+    std::vector<double> values;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        std::size_t used = 0;
+        try {
+            values.push_back(std::stod(item, &used));
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != item.size() || !(values.empty() || std::isfinite(values.back())))
+            throw StudyError(what + ": '" + item + "' is not a number");
+    }
+    return values;
+}
+
+Ladder ladder(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos) throw StudyError("--vary takes NAME=v1,v2,… (got '" + text + "')");
+    Ladder l{text.substr(0, eq), numbers(text.substr(eq + 1), "--vary " + text.substr(0, eq))};
+    for (double v : l.levels)
+        if (!(v > 0)) throw StudyError("--vary " + l.parameter + ": levels must be positive");
+    return l;
+}
+
+std::string percent(double relative) {
+    char b[32];
+    if (std::isnan(relative)) return "-";
+    std::snprintf(b, sizeof b, "%.3g %%", 100.0 * relative);
+    return b;
+}
+
+} // namespace
+
+int study_command(const Args& args) {
+    po::options_description options("Options");
+    options.add_options()
+        ("scene", po::value<std::string>()->required(), "scene file (TOML)")
+        ("vary", po::value<std::vector<std::string>>()->composing(), "NAME=v1,v2,… with NAME elements, fibres or increment (repeatable)")
+        ("reference", po::value<std::string>(), "exact, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form)")
+        ("at", po::value<std::string>(), "displacements where the error is reported, e.g. 20,40,60")
+        ("output,o", po::value<std::string>(), "output folder (default out/<scene>/study)");
+    po::positional_options_description positional;
+    positional.add("scene", 1);
+    po::variables_map vm;
+    if (auto code = parse_options(args, "plastica study SCENE --vary elements=10,20,50 [--vary …] [--reference exact|finest|FILE]",
+                                  options, positional, vm))
+        return *code;
+    StudyOptions o;
+    o.scene = vm["scene"].as<std::string>();
+    StudyReport report;
+    Model model;
+    try {
+        model = read_scene(o.scene);
+        if (!vm.count("vary")) throw StudyError("give at least one --vary NAME=v1,v2,…");
+        for (const std::string& v : vm["vary"].as<std::vector<std::string>>()) o.ladders.push_back(ladder(v));
+        o.reference = vm.count("reference") ? vm["reference"].as<std::string>() : (model.report.exact.empty() ? "finest" : "exact");
+        if (vm.count("at")) o.at = numbers(vm["at"].as<std::string>(), "--at");
+        report = run_study(o);
+    } catch (const SceneError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    } catch (const StudyError& e) {
+        std::cerr << "plastica: " << o.scene << ": " << e.what() << "\n";
+        return bad_input;
+    }
+    namespace fs = std::filesystem;
+    const fs::path folder = vm.count("output") ? fs::path(vm["output"].as<std::string>()) : fs::path(default_output_folder(model.name)) / "study";
+    fs::create_directories(folder);
+
+    std::ofstream csv(folder / "study.csv");
+    csv.precision(10);
+    csv << "parameter,level,seconds,repeats,steps,iterations,status,is_reference,max_error,rms_error";
+    for (double d : report.at) csv << ",error_at_" << d;
+    csv << "\n";
+    std::cout << model.name << ": errors against " << report.reference << " (relative to the peak load)\n";
+    std::printf("%-10s %8s %10s %6s %7s %10s %10s", "parameter", "level", "seconds", "steps", "iters", "max", "rms");
+    for (double d : report.at) std::printf("   at %-6g", d);
+    std::printf("\n");
+    for (const StudyLevel& l : report.levels) {
+        csv << l.parameter << ',' << l.level << ',' << l.seconds << ',' << l.repeats << ',' << l.steps << ',' << l.iterations
+            << ",\"" << l.status << "\"," << l.is_reference << ',' << l.error.max << ',' << l.error.rms;
+        for (double e : l.error.at) csv << ',' << e;
+        csv << "\n";
+        std::printf("%-10s %8g %10.4g %6d %7d %10s %10s", l.parameter.c_str(), l.level, l.seconds, l.steps, l.iterations,
+                    l.is_reference ? "reference" : percent(l.error.max).c_str(), l.is_reference ? "" : percent(l.error.rms).c_str());
+        for (double e : l.error.at) std::printf("   %-9s", l.is_reference ? "" : percent(e).c_str());
+        std::printf("\n");
+    }
+    for (const auto& [parameter, order] : report.observed_order)
+        std::printf("observed order of convergence in %s: %.2f\n", parameter.c_str(), order);
+
+    render::ChartFigure chart{model.name + ": error of the load-displacement curve against run time", "wall time of the analysis [s]",
+                              "max error of the load / peak load", {}, true};
+    chart.log_scale = true;
+    const render::Rgb colours[] = {{31, 90, 180}, {230, 120, 20}, {40, 150, 70}};
+    int k = 0;
+    for (const Ladder& ladder : o.ladders) {
+        render::ChartSeries line{ladder.parameter + " ", {}, {}, colours[k % 3], 2.5f};
+        render::ChartSeries dots{"", {}, {}, colours[k % 3], 9.0f, true};
+        for (const StudyLevel& l : report.levels)
+            if (l.parameter == ladder.parameter && !l.is_reference && l.error.max > 0) {
+                line.x.push_back(l.seconds);
+                line.y.push_back(l.error.max);
+                line.label += (line.x.size() == 1 ? "" : ", ") + render::number(l.level);
+            }
+        if (const auto& o2 = report.observed_order[k]; std::isfinite(o2.second)) line.label += "  (order " + render::number(o2.second) + ")";
+        dots.x = line.x;
+        dots.y = line.y;
+        chart.series.push_back(line);
+        chart.series.push_back(dots);
+        ++k;
+    }
+    try {
+        render::write_png(render::draw_chart(chart), (folder / "study.png").string());
+    } catch (const render::RenderError& e) {
+        std::cerr << "plastica: cannot draw study.png: " << e.what() << "\n";
+        return bad_input;
+    }
+    std::cout << "-> " << (folder / "study.csv").string() << ", " << (folder / "study.png").string() << "\n";
+    return ok;
+}
+
+} // namespace plastica::cli

@@ -1,0 +1,59 @@
+#include "scene_variant.hpp"
+
+#include "scene_error.hpp"
+#include "study_error.hpp"
+#include "scene_reader.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace plastica {
+
+namespace {
+
+int set_in_tables(toml::table& root, const char* array, const char* key, double value) {
+    int changed = 0;
+    if (toml::array* list = root[array].as_array())
+        for (toml::node& item : *list)
+            if (toml::table* t = item.as_table(); t && t->contains(key)) {
+                t->insert_or_assign(key, static_cast<int64_t>(std::llround(value)));
+                ++changed;
+            }
+    return changed;
+}
+
+} // namespace
+
+Model scene_variant(const std::string& file, const std::string& parameter, double value) {
+    toml::table root;
+    try {
+        root = toml::parse_file(file);
+    } catch (const toml::parse_error& e) {
+        throw SceneError(file, static_cast<int>(e.source().begin.line), "", std::string(e.description()));
+    }
+    int changed = 0;
+    if (parameter == "elements") {
+        changed = set_in_tables(root, "line", "elements", value) + set_in_tables(root, "arc", "elements", value);
+    } else if (parameter == "fibres") {
+        changed = set_in_tables(root, "section", "fibres", value);
+    } else if (parameter == "increment") {
+        if (toml::table* a = root["analysis"].as_table(); a && a->contains("increment")) {
+            const double old = a->get("increment")->value_or(value);
+            a->insert_or_assign("increment", value);
+            // Room for the smaller steps to reach the same target.
+            const int64_t steps = (*a)["max_steps"].value_or(int64_t{200});
+            a->insert_or_assign("max_steps", std::max<int64_t>(steps, static_cast<int64_t>(std::ceil(steps * old / value))));
+            changed = 1;
+        }
+    } else {
+        throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres and increment");
+    }
+    if (changed == 0) throw StudyError(file + ": no '" + parameter + "' to vary in this scene");
+    std::ostringstream text;
+    text << root;
+    return read_scene_text(text.str(), file + " (" + parameter + " = " + std::to_string(value) + ")");
+}
+
+} // namespace plastica

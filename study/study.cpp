@@ -1,0 +1,136 @@
+#include "study.hpp"
+#include "scene_variant.hpp"
+
+#include "analysis/path_following.hpp"
+#include "study_error.hpp"
+#include "scene_reader.hpp"
+#include "verification/cantilever_elastica.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace plastica {
+
+namespace {
+
+struct Solved {
+    Curve curve;
+    RunSummary summary;
+    double seconds = 0.0;
+    int repeats = 0;
+};
+
+Solved solve(const Model& model, double min_seconds) {
+    Solved s;
+    std::vector<double> times;
+    double total = 0.0;
+    while (times.empty() || (total < min_seconds && times.size() < 7)) {
+        Curve curve;
+        PathFollowing analysis(model);
+        const auto t0 = std::chrono::steady_clock::now();
+        s.summary = analysis.run({[&](const StepResult& r) {
+            curve.displacement.push_back(r.control_displacement);
+            curve.load.push_back(r.load);
+        }});
+        times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        total += times.back();
+        s.curve = std::move(curve);
+    }
+    std::sort(times.begin(), times.end());
+    s.seconds = times[times.size() / 2];
+    s.repeats = static_cast<int>(times.size());
+    return s;
+}
+
+// The exact load–deflection curve of the scene's closed form, sampled densely.
+Curve exact_curve(const Model& model) {
+    if (model.report.exact != "cantilever_tip_load")
+        throw StudyError(model.source + ": no closed form; set [report] exact, or use --reference finest or a CSV file");
+    double x0 = 1e300, x1 = -1e300;
+    for (const Node& n : model.nodes) x0 = std::min(x0, n.x), x1 = std::max(x1, n.x);
+    const double L = x1 - x0;
+    const double EI = model.sections.front().E * model.sections.front().inertia;
+    Curve c;
+    c.displacement.push_back(0.0);
+    c.load.push_back(0.0);
+    for (int i = 1; i <= 400; ++i) {
+        const double alpha = 12.0 * i / 400.0; // beyond PL²/EI = 10, the scene's end
+        c.displacement.push_back(cantilever_tip_load(alpha).deflection * L);
+        c.load.push_back(alpha * EI / (L * L) * model.report.load_scale);
+    }
+    return c;
+}
+
+double step_size(const std::string& parameter, double level) {
+    return parameter == "increment" ? level : 1.0 / level;
+}
+
+// Least-squares slope of log(error) against log(h).
+double slope(const std::vector<double>& h, const std::vector<double>& error) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+        if (!(error[i] > 0) || !std::isfinite(error[i])) continue;
+        const double x = std::log(h[i]), y = std::log(error[i]);
+        sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+    }
+    if (n < 2) return std::nan("");
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+} // namespace
+
+StudyReport run_study(const StudyOptions& options) {
+    StudyReport report;
+    const Model base = read_scene(options.scene);
+    std::optional<Curve> fixed_reference;
+    if (options.reference == "exact") {
+        fixed_reference = exact_curve(base);
+        report.reference = "exact: " + base.report.exact;
+    } else if (options.reference != "finest") {
+        fixed_reference = read_curve_csv(options.reference);
+        report.reference = "curve " + options.reference;
+    } else {
+        report.reference = "finest level of each parameter";
+    }
+    for (const Ladder& ladder : options.ladders) {
+        if (ladder.levels.size() < 2) throw StudyError("--vary " + ladder.parameter + " needs at least two levels");
+        std::vector<Solved> runs;
+        for (double level : ladder.levels) runs.push_back(solve(scene_variant(options.scene, ladder.parameter, level), options.min_seconds));
+        // The finest: most elements or fibres, smallest increment.
+        std::size_t finest = 0;
+        for (std::size_t i = 1; i < ladder.levels.size(); ++i)
+            if (step_size(ladder.parameter, ladder.levels[i]) < step_size(ladder.parameter, ladder.levels[finest])) finest = i;
+        const Curve& reference = fixed_reference ? *fixed_reference : runs[finest].curve;
+        if (report.at.empty()) {
+            report.at = options.at;
+            if (report.at.empty()) {
+                const CurveError span = curve_error(runs[finest].curve, reference, {});
+                for (double f : {0.25, 0.5, 0.75, 1.0}) report.at.push_back(span.from + f * (span.to - span.from));
+            }
+        }
+        std::vector<double> hs, errors;
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+            StudyLevel l;
+            l.parameter = ladder.parameter;
+            l.level = ladder.levels[i];
+            l.seconds = runs[i].seconds;
+            l.repeats = runs[i].repeats;
+            l.steps = runs[i].summary.steps;
+            l.iterations = runs[i].summary.iterations;
+            l.status = runs[i].summary.reason;
+            l.is_reference = !fixed_reference && i == finest;
+            l.error = curve_error(runs[i].curve, reference, report.at);
+            if (!l.is_reference) {
+                hs.push_back(step_size(ladder.parameter, l.level));
+                errors.push_back(l.error.max);
+            }
+            report.levels.push_back(l);
+        }
+        report.observed_order.emplace_back(ladder.parameter, slope(hs, errors));
+    }
+    return report;
+}
+
+} // namespace plastica

@@ -1,0 +1,49 @@
+// Error against run time (DESIGN §7): a scene run over a ladder of one discretisation parameter
+// at a time; for each level the analysis wall time (median of repeats when a run is short),
+// steps, Newton iterations, and the error of its load–displacement curve against a reference —
+// the scene's closed form, a user's CSV curve, or the finest level of the same ladder. The
+// observed order of convergence is the slope of log(max error) against log(h), h = 1/level for
+// elements and fibres, h = increment.
+#pragma once
+
+#include "curve_error.hpp"
+
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+struct Ladder {
+    std::string parameter;      // elements, fibres or increment
+    std::vector<double> levels; // in the order given
+};
+
+struct StudyOptions {
+    std::string scene;
+    std::vector<Ladder> ladders;
+    std::string reference = "finest"; // exact, finest, or a CSV file
+    std::vector<double> at;           // displacements where the error is reported (default: quarters)
+    double min_seconds = 0.3;         // repeat a level until this much time has passed (at most 7 runs)
+};
+
+struct StudyLevel {
+    std::string parameter;
+    double level = 0.0;
+    double seconds = 0.0; // median wall time of the analysis
+    int repeats = 0, steps = 0, iterations = 0;
+    std::string status;
+    bool is_reference = false;
+    CurveError error;
+};
+
+struct StudyReport {
+    std::string reference; // what the errors are measured against
+    std::vector<double> at;
+    std::vector<StudyLevel> levels;
+    std::vector<std::pair<std::string, double>> observed_order; // per parameter
+};
+
+// Throws SceneError for a bad scene, StudyError for a bad parameter or reference.
+StudyReport run_study(const StudyOptions& options);
+
+} // namespace plastica

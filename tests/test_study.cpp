@@ -1,0 +1,89 @@
+// Error against run time and the stability sweep: the exact elastica, scene variants, the curve
+// error, convergence orders, and every stability case against its expected outcome.
+#include "curve_error.hpp"
+#include "scene_variant.hpp"
+#include "stability_cases.hpp"
+#include "study.hpp"
+#include "study_error.hpp"
+#include "verification/cantilever_elastica.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace plastica;
+
+namespace {
+std::string model(const std::string& name) { return std::string(PLASTICA_SOURCE_DIR) + "/models/" + name + ".toml"; }
+} // namespace
+
+TEST_CASE("The exact elastica reproduces Mattiasson's table to its five digits", "[study][elastica]") {
+    // BENCHMARKS.md §1: α = PL²/EI, tip shortening u/L and deflection v/L.
+    const double table[][3] = {{1, 0.05643, 0.30172}, {2, 0.16064, 0.49346}, {5, 0.38763, 0.71379}, {10, 0.55500, 0.81061}};
+    for (const auto& row : table) {
+        const ElasticaTip t = cantilever_tip_load(row[0]);
+        CHECK(t.shortening == Approx(row[1]).margin(6e-6));
+        CHECK(t.deflection == Approx(row[2]).margin(6e-6));
+        CHECK(cantilever_load_for_deflection(t.deflection) == Approx(row[0]).epsilon(1e-9));
+    }
+    // Small loads: linear theory v/L = α/3.
+    CHECK(cantilever_tip_load(1e-4).deflection == Approx(1e-4 / 3).epsilon(1e-6));
+}
+
+TEST_CASE("A scene variant changes one discretisation parameter and nothing else", "[study]") {
+    const Model coarse = scene_variant(model("ring_inelastic"), "elements", 20);
+    CHECK(coarse.elements.size() == 20u);
+    CHECK(coarse.nodes.size() == 21u);
+    const Model fine_fibres = scene_variant(model("ring_inelastic"), "fibres", 40);
+    CHECK(fine_fibres.sections.front().fibres.size() == 40u);
+    CHECK(fine_fibres.elements.size() == 50u);
+    const Model small_steps = scene_variant(model("ring_inelastic"), "increment", 0.25);
+    CHECK(small_steps.analysis.initial_increment == 0.25);
+    CHECK(small_steps.analysis.max_steps >= 400);
+    CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "fibres", 10), Catch::Contains("no 'fibres' to vary"));
+    CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "colour", 10), Catch::Contains("elements, fibres and increment"));
+}
+
+TEST_CASE("The curve error is zero for the reference itself and measures a known offset", "[study]") {
+    Curve reference{{0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}};
+    CHECK(curve_error(reference, reference, {2.0}).max == 0.0);
+    Curve higher{{0, 1, 2, 3, 4}, {0, 1.04, 2.08, 3.12, 4.16}}; // 4 % high everywhere
+    const CurveError e = curve_error(higher, reference, {2.0});
+    CHECK(e.max == Approx(0.16 / 4).epsilon(1e-9));            // relative to the peak load 4
+    CHECK(e.at.front() == Approx(0.08 / 4).epsilon(1e-9));
+    CHECK(std::isnan(load_at(reference, 9.0)));
+}
+
+TEST_CASE("The cantilever's error against the exact elastica falls at second order in the elements", "[study]") {
+    StudyOptions o;
+    o.scene = model("cantilever_tip_load");
+    o.ladders = {{"elements", {2, 4, 8, 16}}};
+    o.reference = "exact";
+    o.min_seconds = 0.0;
+    const StudyReport r = run_study(o);
+    REQUIRE(r.levels.size() == 4u);
+    for (std::size_t i = 1; i < r.levels.size(); ++i) CHECK(r.levels[i].error.max < r.levels[i - 1].error.max);
+    // Co-rotational Euler–Bernoulli elements: the tip error falls like 1/n².
+    CHECK(r.observed_order.front().second == Approx(2.0).margin(0.25));
+    CHECK(r.levels.back().error.max < 0.005);
+    CHECK_THAT(r.reference, Catch::Contains("exact"));
+}
+
+TEST_CASE("A scene without a closed form refuses --reference exact", "[study]") {
+    StudyOptions o;
+    o.scene = model("ring_elastic");
+    o.ladders = {{"elements", {10, 20}}};
+    o.reference = "exact";
+    CHECK_THROWS_AS(run_study(o), StudyError);
+}
+
+TEST_CASE("Every stability case ends with its expected outcome and no NaN", "[study][stability]") {
+    for (const StabilityCase& c : stability_cases()) {
+        DYNAMIC_SECTION(c.name << ", " << c.parameter) {
+            const StabilityRow r = run_stability_case(c);
+            INFO(r.outcome << ": " << r.reason << "; steps " << r.steps << ", iterations " << r.iterations);
+            CHECK(r.problem == "");
+            CHECK(r.passed);
+        }
+    }
+}
