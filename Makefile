@@ -5,7 +5,7 @@ JOBS       ?= $(shell nproc)
 SCENE      ?= models/ring_inelastic.toml
 CMAKE_ARGS ?=
 
-.PHONY: run test deps build bench test-sanitize update-snapshots clean
+.PHONY: run test deps build bench test-sanitize fuzz update-snapshots clean
 
 deps:
 	@./scripts/install-deps.sh
@@ -39,10 +39,23 @@ bench: deps
 	cmake --build build-bench -j $(JOBS) --target plastica_bench
 	build-bench/bench/plastica_bench
 
+# Fuzzes the scene reader for FUZZ_SECONDS (clang's libFuzzer, ASan + UBSan); crashes land in
+# build-fuzz/findings/ and become cases in tests/test_scene_errors.cpp.
+FUZZ_SECONDS ?= 120
+fuzz:
+	@./scripts/install-deps.sh clang
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DPLASTICA_FUZZ=ON -DPLASTICA_TESTS=OFF
+	cmake --build build-fuzz -j $(JOBS) --target scene_reader_fuzzer
+	mkdir -p build-fuzz/corpus build-fuzz/findings
+	cp models/*.toml build-fuzz/corpus/
+	build-fuzz/fuzz/scene_reader_fuzzer build-fuzz/corpus -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	  -timeout=10 -rss_limit_mb=4096 -artifact_prefix=build-fuzz/findings/ -print_final_stats=1
+
 # Rewrites the stored snapshot references on purpose (review the new pictures before committing).
 update-snapshots: build
 	rm -rf tests/snapshots
 	scripts/render-snapshots.sh $(BUILD)/cli/plastica tests/snapshots
 
 clean:
-	rm -rf $(BUILD) build-sanitize build-bench
+	rm -rf $(BUILD) build-sanitize build-bench build-fuzz

@@ -203,3 +203,46 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
     CHECK_THAT(stability.output, Catch::Contains("every case behaved as expected"));
     CHECK(fs::exists(table / "stability.csv"));
 }
+
+TEST_CASE("Ctrl-C and SIGTERM stop a run cleanly: exit 130, valid series, run.json says so", "[cli][signal]") {
+    const fs::path dir = scratch("signal");
+    fs::create_directories(dir);
+    // The inelastic ring in 10 000 steps: long enough to be stopped mid-way.
+    std::ifstream in(model("ring_inelastic.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    s.replace(s.find("increment = 0.5"), 15, "increment = 0.01");
+    s.replace(s.find("max_steps = 400"), 15, "max_steps = 20000");
+    std::ofstream(dir / "long.toml") << s;
+    for (const char* signal : {"INT", "TERM"}) {
+        const fs::path out = dir / signal;
+        // Started in the background, stopped after two seconds; the shell reports its exit code.
+        const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " run " + (dir / "long.toml").string() +
+                                " -o " + out.string() + " -q > /dev/null 2>&1 & pid=$!; sleep 2; kill -" + signal +
+                                " $pid; wait $pid";
+        const int status = std::system(cmd.c_str());
+        CHECK(WEXITSTATUS(status) == 130);
+        std::ifstream report(out / "run.json");
+        std::stringstream json;
+        json << report.rdbuf();
+        CHECK_THAT(json.str(), Catch::Contains("\"interrupted\""));
+        // Every step the PVD lists exists; no temporary file is left under any name.
+        std::ifstream pvd(out / "ring_inelastic.pvd");
+        std::stringstream listing;
+        listing << pvd.rdbuf();
+        const std::string l = listing.str();
+        int listed = 0;
+        for (std::size_t at = l.find("file=\"vtu/"); at != std::string::npos; at = l.find("file=\"vtu/", at + 1)) {
+            const std::string file = l.substr(at + 6, l.find('"', at + 6) - at - 6);
+            CHECK(fs::exists(out / file));
+            ++listed;
+        }
+        CHECK(listed > 2);
+        CHECK(listed < 10000);
+        for (const auto& entry : fs::recursive_directory_iterator(out))
+            CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
+        // The stopped series is a valid input to the render stage.
+        CHECK(plastica("render " + out.string() + " --every 1000 --size 320x180 --no-animation -q").code == 0);
+    }
+}
