@@ -583,9 +583,10 @@ private:
         model_.report.load_label = r.string_or("load_label", model_.report.load_label);
         model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
         model_.report.exact = r.string_or("exact", "");
+        if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x");
         if (!model_.report.exact.empty() && model_.report.exact != "cantilever_tip_load")
             r.fail("exact", "the closed forms known are: cantilever_tip_load");
-        r.finish({"load_scale", "load_label", "displacement_label", "exact"});
+        r.finish({"load_scale", "load_label", "displacement_label", "exact", "mirror_x"});
     }
 
     const toml::table& root_;

@@ -276,6 +276,7 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     const std::pair<const char*, const std::string*> names[] = {
         {"scene", &m.name}, {"title", &m.title},
         {"load_label", &m.report.load_label}, {"displacement_label", &m.report.displacement_label}};
+    if (m.report.mirror_x) add_field(fd, "mirror_x", *m.report.mirror_x);
     for (const auto& [key, value] : names) {
         vtkNew<vtkStringArray> text;
         text->SetName(key);

@@ -3,6 +3,7 @@
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -55,6 +56,10 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& field) {
             s.displacement_label = field_text(grid, "displacement_label", "control displacement");
             s.unilateral = grid->GetPointData()->GetArray("contact_force") != nullptr;
             s.inelastic = grid->GetCellData()->GetArray("hinge_state_i") != nullptr;
+            if (grid->GetFieldData()->GetArray("mirror_x")) {
+                s.mirrored = true;
+                s.mirror_x = field_value(grid, "mirror_x");
+            }
             s.field.name = field;
             vtkDataArray* a = grid->GetPointData()->GetArray(field.c_str());
             if (!a) {
@@ -108,6 +113,11 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& field) {
             s.any_plastic = s.any_plastic || count_state(st, 2) > 0;
             s.any_failed = s.any_failed || count_state(st, 3) > 0;
         }
+    }
+    if (s.mirrored) {
+        const double lo = std::min(b[0], 2 * s.mirror_x - b[1]), hi = std::max(b[1], 2 * s.mirror_x - b[0]);
+        b[0] = lo;
+        b[1] = hi;
     }
     std::copy(b, b + 4, s.bounds);
     s.field_range[0] = range[0];

@@ -38,6 +38,8 @@ struct SeriesSummary {
     bool any_contact = false;        // some step has a node in contact
     double max_contact_force = 0.0;
     bool inelastic = false;          // the scene has plastic hinges (hinge arrays)
+    bool mirrored = false;           // a half model drawn with its mirror image about x = mirror_x
+    double mirror_x = 0.0;
     bool any_yielding = false, any_plastic = false, any_failed = false;
 };
 

@@ -18,6 +18,7 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTransform.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -114,9 +115,11 @@ StructureView::StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* 
 
     if (layers.initial_shape) add_initial_shape(first_step);
     if (has_base_ || has_anchors_) add_base(base);
-    renderer_->AddActor(outline);
-    renderer_->AddActor(shape);
-    for (FlatMarks* m : {&base_, &anchors_, &contact_, &hinge_under_, &hinge_, &hinge_failed_}) renderer_->AddViewProp(m->prop());
+    add_with_mirror(outline);
+    add_with_mirror(shape);
+    renderer_->AddViewProp(base_.prop()); // the base line already spans both halves
+    for (FlatMarks* m : {&anchors_, &contact_, &hinge_under_, &hinge_, &hinge_failed_})
+        add_with_mirror(vtkActor::SafeDownCast(m->prop()));
     add_colour_bar(text_scale);
     add_legend(text_scale, layers);
 }
@@ -175,7 +178,21 @@ void StructureView::add_initial_shape(vtkUnstructuredGrid* first_step) {
     set_ribbon(ribbon, 0.6 * ribbon_width_);
     auto actor = ribbon_actor(ribbon, -2.0);
     actor->GetProperty()->SetColor(colour::initial_shape.red(), colour::initial_shape.green(), colour::initial_shape.blue());
+    add_with_mirror(actor);
+}
+
+void StructureView::add_with_mirror(vtkActor* actor) {
     renderer_->AddActor(actor);
+    if (!summary_.mirrored) return;
+    // The same data drawn reflected about x = mirror_x: x → 2·mirror_x − x.
+    vtkNew<vtkTransform> reflect;
+    reflect->Translate(summary_.mirror_x, 0, 0);
+    reflect->Scale(-1, 1, 1);
+    reflect->Translate(-summary_.mirror_x, 0, 0);
+    vtkNew<vtkActor> twin;
+    twin->ShallowCopy(actor);
+    twin->SetUserTransform(reflect);
+    renderer_->AddActor(twin);
 }
 
 void StructureView::add_base(vtkPolyData* base) {
@@ -198,12 +215,22 @@ void StructureView::add_base(vtkPolyData* base) {
         if ((cx - a[0]) * nx + (cy - a[1]) * ny < 0) nx = -nx, ny = -ny;
         base_normal_[0] = nx;
         base_normal_[1] = ny;
-        base_.bar(a, b, pixels(3), colour::base);
-        // Hatching on the far side, every 14 pixels along the part of the line in view.
+        // Only the part left of the legend column is drawn, so the legend stays clear.
+        const double right = view_[0] + (1.0 - side_column) * (view_[1] - view_[0]);
+        double s0 = 0.0, s1 = length;
+        if (std::abs(tx) > 1e-12) {
+            const double sa = (view_[0] - a[0]) / tx, sb = (right - a[0]) / tx;
+            s0 = std::max(s0, std::min(sa, sb));
+            s1 = std::min(s1, std::max(sa, sb));
+        }
+        if (s1 <= s0) continue;
+        const double from[2] = {a[0] + s0 * tx, a[1] + s0 * ty}, to[2] = {a[0] + s1 * tx, a[1] + s1 * ty};
+        base_.bar(from, to, pixels(3), colour::base);
+        // Hatching on the far side, every 14 pixels.
         const double step = pixels(14), tick = pixels(12);
-        for (double s = 0; s <= length; s += step) {
+        for (double s = s0 + 0.5 * step; s <= s1; s += step) {
             const double p[2] = {a[0] + s * tx, a[1] + s * ty};
-            if (p[0] < view_[0] - tick || p[0] > view_[1] + tick || p[1] < view_[2] - tick || p[1] > view_[3] + tick) continue;
+            if (p[1] < view_[2] - tick || p[1] > view_[3] + tick) continue;
             const double q[2] = {p[0] - tick * (nx + tx) * M_SQRT1_2, p[1] - tick * (ny + ty) * M_SQRT1_2};
             base_.bar(p, q, pixels(1.5), colour::hatching);
         }
@@ -276,6 +303,14 @@ void StructureView::add_legend(double text_scale, const Layers& layers) {
         text->SetPosition(x + 26 * s, y);
         notes_.push_back(text);
         y -= 26 * s;
+    }
+    if (summary_.mirrored) {
+        auto note = vtkSmartPointer<vtkTextActor>::New();
+        note->SetInput(("half model, drawn mirrored\nabout x = " + format("%g", summary_.mirror_x)).c_str());
+        style_text(note->GetTextProperty(), 12 * s);
+        note->GetTextProperty()->SetVerticalJustificationToTop();
+        note->SetPosition(x, viewport_.height_px * 0.06 + 12 * s);
+        notes_.push_back(note);
     }
     if (show_contact_) {
         auto note = vtkSmartPointer<vtkTextActor>::New();

@@ -49,6 +49,7 @@ public:
 private:
     void fix_camera();
     void add_initial_shape(vtkUnstructuredGrid* first_step);
+    void add_with_mirror(vtkActor* actor); // and its mirror image for a half model
     void add_base(vtkPolyData* base);
     void add_colour_bar(double text_scale);
     void add_legend(double text_scale, const Layers& layers);

@@ -107,6 +107,7 @@ struct ReportSpec {
     std::string load_label = "load";                         // axis and title names in pictures
     std::string displacement_label = "control displacement";
     std::string exact;  // a closed form this scene has ("cantilever_tip_load"), for `plastica study`
+    std::optional<double> mirror_x; // a half model symmetric about x = mirror_x: pictures show both halves
 };
 
 struct Model {
