@@ -49,8 +49,6 @@ void FlatMarks::clear() {
     data_->Modified();
 }
 
-bool FlatMarks::empty() const { return polygons_->GetNumberOfCells() == 0; }
-
 void FlatMarks::polygon(const double* xy, int n, Rgb colour) {
     std::vector<vtkIdType> ids(n);
     for (int i = 0; i < n; ++i) ids[i] = points_->InsertNextPoint(xy[2 * i], xy[2 * i + 1], depth_);

@@ -28,7 +28,6 @@ public:
     void bar(const double a[2], const double b[2], double width, Rgb colour);
     void cross(double x, double y, double size, double width, Rgb colour);
 
-    bool empty() const;
     vtkProp* prop() { return prop_; }
 
 private:

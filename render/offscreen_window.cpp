@@ -24,7 +24,7 @@ void make_current(vtkObject*, unsigned long, void* client, void*) {
 } // namespace
 
 OffscreenWindow::OffscreenWindow(int width, int height)
-    : width_(width), height_(height), context_(std::make_unique<OffscreenContext>(width, height)) {
+    : context_(std::make_unique<OffscreenContext>(width, height)) {
     window_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
     vtkNew<vtkCallbackCommand> on_make_current;
     on_make_current->SetCallback(make_current);

@@ -27,12 +27,9 @@ public:
     // Draws every renderer and returns a copy of the pixels (RGB, origin bottom left).
     vtkSmartPointer<vtkImageData> capture();
 
-    int width() const { return width_; }
-    int height() const { return height_; }
     const std::string& gl_renderer() const { return gl_renderer_; }
 
 private:
-    int width_, height_;
     std::unique_ptr<OffscreenContext> context_;
     vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
     vtkSmartPointer<vtkWindowToImageFilter> grabber_;

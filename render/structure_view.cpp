@@ -213,8 +213,6 @@ void StructureView::add_base(vtkPolyData* base) {
         const double tx = (b[0] - a[0]) / length, ty = (b[1] - a[1]) / length;
         double nx = -ty, ny = tx;
         if ((cx - a[0]) * nx + (cy - a[1]) * ny < 0) nx = -nx, ny = -ny;
-        base_normal_[0] = nx;
-        base_normal_[1] = ny;
         // Only the part left of the legend column is drawn, so the legend stays clear.
         const double right = view_[0] + (1.0 - side_column) * (view_[1] - view_[0]);
         double s0 = 0.0, s1 = length;

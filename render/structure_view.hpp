@@ -72,7 +72,6 @@ private:
     double world_per_pixel_ = 1.0;
     double ribbon_width_ = 1.0;
     double arrow_scale_ = 0.0;        // world length per unit contact force
-    double base_normal_[2] = {0, 1};  // from the base towards the structure
     bool has_base_ = false;     // a rigid base line
     bool has_anchors_ = false;  // bilateral spring anchors
 };
