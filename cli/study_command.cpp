@@ -131,7 +131,8 @@ int study_command(const Args& args) {
                 line.y.push_back(l.error.max);
                 line.label += (line.x.size() == 1 ? "" : ", ") + render::number(l.level);
             }
-        if (const auto& o2 = report.observed_order[k]; std::isfinite(o2.second)) line.label += "  (order " + render::number(o2.second) + ")";
+        if (const double order = report.observed_order[k].second; std::isfinite(order))
+            line.label += "  (order " + render::number(order) + ")";
         dots.x = line.x;
         dots.y = line.y;
         chart.series.push_back(line);
