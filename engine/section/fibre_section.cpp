@@ -17,10 +17,7 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
         ny_tension_ += steel.fy * f.area;
     }
     ny_compression_ = ny_tension_;
-    // moment_capacity scans the fibres from the bottom; it runs at every hinge evaluation.
-    by_height_.resize(fibres_.size());
-    std::iota(by_height_.begin(), by_height_.end(), 0);
-    std::sort(by_height_.begin(), by_height_.end(), [&](std::size_t a, std::size_t b) { return fibres_[a].y < fibres_[b].y; });
+    build_capacity_curves();
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
 }
@@ -108,34 +105,42 @@ void FibreSection::revert() {
     phi_t_ = phi_c_;
 }
 
-double FibreSection::moment_capacity(double N, double sign) const {
+void FibreSection::build_capacity_curves() {
     // Fully plastic state: with positive bending the fibres below the neutral axis are in
     // tension (+fy) and those above in compression (−fy); the fibre the axis crosses carries
-    // whatever stress balances N. Fibres are scanned from the bottom.
-    if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
-    const std::vector<std::size_t>& order = by_height_;
-    const double below_sign = sign > 0.0 ? 1.0 : -1.0;
-    // N(k) with fibres [0, k) at below_sign·fy and (k, n) at −below_sign·fy, fibre k partial.
-    double below = 0.0;
-    double above = 0.0;
-    for (const FibrePoint& f : fibres_) above += f.fy * f.area;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        const FibrePoint& fk = fibres_[order[k]];
-        above -= fk.fy * fk.area;
-        const double rest = N - below_sign * below + below_sign * above;
-        const double stress = rest / fk.area;
-        if (std::abs(stress) <= fk.fy * (1.0 + 1e-14)) {
-            double M = 0.0;
+    // whatever stress balances N. As that fibre's stress runs from −fy to +fy, N and M both
+    // change linearly, so M_p(N) is exactly the polyline through the states where the axis
+    // lies between two fibres: breakpoint k has the k lowest fibres on the "below" side.
+    std::vector<std::size_t> order(fibres_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fibres_[a].y < fibres_[b].y; });
+    for (int side = 0; side < 2; ++side) {
+        const double below_sign = side == 0 ? 1.0 : -1.0;
+        std::vector<CapacityPoint>& curve = capacity_[side];
+        curve.clear();
+        for (std::size_t k = 0; k <= order.size(); ++k) {
+            CapacityPoint p;
             for (std::size_t m = 0; m < order.size(); ++m) {
                 const FibrePoint& f = fibres_[order[m]];
-                const double s = m < k ? below_sign * f.fy : (m == k ? stress : -below_sign * f.fy);
-                M -= s * f.area * f.y;
+                const double s = (m < k ? below_sign : -below_sign) * f.fy;
+                p.N += s * f.area;
+                p.M -= s * f.area * f.y;
             }
-            return std::abs(M);
+            curve.push_back(p);
         }
-        below += fk.fy * fk.area;
+        std::sort(curve.begin(), curve.end(), [](const CapacityPoint& a, const CapacityPoint& b) { return a.N < b.N; });
     }
-    return 0.0;
+}
+
+double FibreSection::moment_capacity(double N, double sign) const {
+    if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
+    const std::vector<CapacityPoint>& curve = capacity_[sign > 0.0 ? 0 : 1];
+    const auto upper = std::upper_bound(curve.begin() + 1, curve.end() - 1, N,
+                                        [](double n, const CapacityPoint& p) { return n < p.N; });
+    const CapacityPoint& a = *(upper - 1);
+    const CapacityPoint& b = *upper;
+    const double t = b.N > a.N ? (N - a.N) / (b.N - a.N) : 0.0;
+    return std::abs(a.M + t * (b.M - a.M));
 }
 
 double FibreSection::first_yield_moment(double N) const {

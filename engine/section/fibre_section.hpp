@@ -9,6 +9,7 @@
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <vector>
 
 namespace plastica {
@@ -78,7 +79,14 @@ private:
     };
     SectionSpec spec_; // kept to rebuild an unstressed copy
     std::vector<FibrePoint> fibres_;
-    std::vector<std::size_t> by_height_; // fibre indices from the lowest y up
+    // M_p(N) as a polyline per bending sign (index 0 positive), ordered by N; it is exact
+    // for fibres and runs at every hinge evaluation.
+    struct CapacityPoint {
+        double N = 0.0;
+        double M = 0.0;
+    };
+    void build_capacity_curves();
+    std::array<std::vector<CapacityPoint>, 2> capacity_;
     double E_ = 0.0;
     double ea0_ = 0.0, ei0_ = 0.0;
     double ny_tension_ = 0.0, ny_compression_ = 0.0;

@@ -1,19 +1,23 @@
-// Solves K x = b for the symmetric tangent. LDLᵀ (no pivoting, AMD ordering, symbolic
-// analysis done once) tolerates the indefinite tangent past a limit point and gives its
-// inertia: the number of negative pivots counts the eigenvalues below zero (Sylvester).
-// If a pivot vanishes, sparse LU with partial pivoting takes over for that factorisation.
+// Solves K x = b for the symmetric tangent. LDLᵀ (no pivoting) tolerates the indefinite
+// tangent past a limit point and gives its inertia: the number of negative pivots counts the
+// eigenvalues below zero (Sylvester). The fill-reducing (AMD) order and the symbolic analysis
+// are computed once: K's lower triangle is then copied straight into the permuted upper
+// triangle the factorisation reads, through a fixed slot map. If a pivot vanishes, sparse LU
+// with partial pivoting takes over for that factorisation.
 #pragma once
 
 #include "solver/block_assembler.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#include <vector>
 
 namespace plastica {
 
 class LinearSolver {
 public:
-    // Returns false when the matrix is singular (also for LU).
+    // Returns false when the matrix is singular (also for LU). The sparsity pattern of K
+    // must stay the one of the first call (the assembler keeps it fixed).
     bool factorize(const SparseMatrix& K);
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
     int negative_pivots() const { return negative_pivots_; }
@@ -22,7 +26,14 @@ public:
     double pivot_ratio() const { return pivot_ratio_; }
 
 private:
-    Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
+    using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
+    void analyse(const SparseMatrix& K);
+
+    Permutation order_;         // new position of each equation
+    Permutation order_inverse_; // equation at each new position
+    SparseMatrix permuted_;     // upper triangle of order_·K·order_ᵀ
+    std::vector<int> source_;   // for each value of permuted_, its index in K's values
+    Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt_;
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
     bool analysed_ = false;
     bool lu_analysed_ = false;
