@@ -6,7 +6,8 @@ namespace plastica {
 
 namespace {
 double wrap_to_pi(double angle) {
-    return std::remainder(angle, 2.0 * M_PI);
+    // Nearly always already in range: skip the costly remainder then.
+    return std::abs(angle) <= M_PI ? angle : std::remainder(angle, 2.0 * M_PI);
 }
 } // namespace
 
