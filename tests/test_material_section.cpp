@@ -69,6 +69,29 @@ TEST_CASE("Rectangle: the fully plastic interaction is M/Mp = 1 − (N/Ny)²", "
     }
 }
 
+TEST_CASE("Unequal fibres: the plastic capacity is exact between its corners, both signs", "[section]") {
+    // Fibres A = 1, 1, 2 at y = −1, 0, +1 with fy = 1 (M = −Σ σ A y). Worked by hand: with the
+    // neutral axis through a fibre, that fibre's stress balances N and the others sit at ±fy.
+    SectionSpec spec;
+    spec.E = 1.0;
+    spec.steel = SteelSpec{1.0, 1.0, 0.0};
+    spec.fibres = {{1.0, -1.0, 0.0}, {1.0, 0.0, 0.0}, {2.0, 1.0, 0.0}};
+    const FibreSection s(spec);
+    REQUIRE(s.axial_capacity_tension() == 4.0);
+    // Positive bending (low fibres in tension): axis in the lowest fibre, in the middle one, in the top one.
+    CHECK(s.moment_capacity(-3.0, 1.0) == Approx(2.0).epsilon(1e-14)); // σ = 0, −1, −1
+    CHECK(s.moment_capacity(-1.0, 1.0) == Approx(3.0).epsilon(1e-14)); // σ = 1, 0, −1
+    CHECK(s.moment_capacity(1.0, 1.0) == Approx(2.0).epsilon(1e-14));  // σ = 1, 1, −½
+    CHECK(s.moment_capacity(2.0, 1.0) == Approx(1.0).epsilon(1e-14));  // σ = 1, 1, 0
+    // Negative bending mirrors it through N → −N (the heavy fibre is on top either way).
+    CHECK(s.moment_capacity(-1.0, -1.0) == Approx(2.0).epsilon(1e-14)); // σ = −1, −1, ½
+    CHECK(s.moment_capacity(1.0, -1.0) == Approx(3.0).epsilon(1e-14));  // σ = −1, 0, 1
+    CHECK(s.moment_capacity(3.0, -1.0) == Approx(2.0).epsilon(1e-14));  // σ = 0, 1, 1
+    // At and beyond the squash load there is no moment capacity.
+    CHECK(s.moment_capacity(4.0, 1.0) == 0.0);
+    CHECK(s.moment_capacity(-4.5, -1.0) == 0.0);
+}
+
 TEST_CASE("SCM: Newton finds the deformation carrying (N, M) and the tangents EA_T, EI_T", "[section]") {
     FibreSection s = rectangle(50);
     const double My = fy * b * h * h / 6.0, Ny = fy * b * h;
