@@ -60,6 +60,22 @@ private:
     vtkNew<vtkStringOutputWindow> capture_;
 };
 
+// One VTK XML file through its reader, every failure as one RenderError naming the file.
+template <class Reader, class Data>
+vtkSmartPointer<Data> read_xml(const std::string& file, const char* kind) {
+    VtkMessages messages;
+    vtkNew<Reader> reader;
+    if (!reader->CanReadFile(file.c_str()))
+        throw RenderError(file + ": not a " + kind + " file");
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    if (reader->GetErrorCode() != 0 || messages.any_error())
+        throw RenderError(file + ": unreadable (" + (messages.any_error() ? messages.first() : "truncated or corrupt") + ")");
+    auto copy = vtkSmartPointer<Data>::New();
+    copy->ShallowCopy(reader->GetOutput());
+    return copy;
+}
+
 void require_file(const std::string& file, const std::string& listed_in) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
@@ -121,15 +137,7 @@ ResultSeries open_series(const std::string& folder_or_pvd) {
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> read_step(const std::string& file) {
-    VtkMessages messages;
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    if (!reader->CanReadFile(file.c_str()))
-        throw RenderError(file + ": not a VTK unstructured grid (.vtu) file");
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    vtkUnstructuredGrid* grid = reader->GetOutput();
-    if (reader->GetErrorCode() != 0 || messages.any_error())
-        throw RenderError(file + ": unreadable (" + (messages.any_error() ? messages.first() : "truncated or corrupt") + ")");
+    auto grid = read_xml<vtkXMLUnstructuredGridReader, vtkUnstructuredGrid>(file, "VTK unstructured grid (.vtu)");
     if (grid->GetNumberOfPoints() == 0)
         throw RenderError(file + ": holds no points");
     vtkPointData* pd = grid->GetPointData();
@@ -139,23 +147,11 @@ vtkSmartPointer<vtkUnstructuredGrid> read_step(const std::string& file) {
     for (const char* name : {"load", "control_displacement", "step"})
         if (!grid->GetFieldData()->GetArray(name))
             throw RenderError(file + ": no field data '" + name + "' (not a Plastica result)");
-    auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    copy->ShallowCopy(grid);
-    return copy;
+    return grid;
 }
 
 vtkSmartPointer<vtkPolyData> read_base(const std::string& file) {
-    VtkMessages messages;
-    vtkNew<vtkXMLPolyDataReader> reader;
-    if (!reader->CanReadFile(file.c_str()))
-        throw RenderError(file + ": not a VTK polydata (.vtp) file");
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    if (reader->GetErrorCode() != 0 || messages.any_error())
-        throw RenderError(file + ": unreadable (" + (messages.any_error() ? messages.first() : "truncated or corrupt") + ")");
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->ShallowCopy(reader->GetOutput());
-    return copy;
+    return read_xml<vtkXMLPolyDataReader, vtkPolyData>(file, "VTK polydata (.vtp)");
 }
 
 double field_value(vtkUnstructuredGrid* grid, const char* name) {
