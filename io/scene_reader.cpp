@@ -552,6 +552,7 @@ private:
         a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
         a.residual_tolerance = r.positive_or("residual_tolerance", 1e-6);
         a.displacement_tolerance = r.positive_or("displacement_tolerance", 1e-6);
+        a.allow_crossing = r.boolean_or("allow_crossing", false);
         if (r.has("target_load_factor")) a.target_load_factor = r.number("target_load_factor");
         if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement");
         if (r.has("control_at") || r.has("control_node")) {
@@ -572,7 +573,7 @@ private:
         r.finish({"scheme", "increment", "min_increment", "max_increment", "adaptive", "desired_iterations",
                   "max_iterations", "max_steps", "residual_tolerance", "displacement_tolerance",
                   "target_load_factor", "target_displacement", "control_at", "control_node", "control_dof",
-                  "control_sign"});
+                  "control_sign", "allow_crossing"});
     }
 
     void read_report(TomlTableReader& top) {

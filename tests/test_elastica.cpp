@@ -20,7 +20,7 @@ Run end_moment(double turns, int elements, int increments) {
                                 "[[load]]\nat = [1.0, 0.0]\nmoment = " + num(M) + "\n",
                                 "scheme = \"load_control\"\nincrement = " + num(1.0 / increments) +
                                     "\ntarget_load_factor = 1.0\nresidual_tolerance = 1e-8\n"
-                                    "displacement_tolerance = 1e-8\n"));
+                                    "displacement_tolerance = 1e-8\nallow_crossing = true\n"));
 }
 
 } // namespace

@@ -1,5 +1,9 @@
 #include "analysis/path_following.hpp"
 
+#include "analysis/increment_constraints.hpp"
+#include "analysis/penetration_check.hpp"
+#include "analysis/structure_problem.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,7 +29,7 @@ double PathFollowing::control_value(const Eigen::VectorXd& u) const {
     return c.sign * u[dofs_per_node * c.node + c.dof];
 }
 
-StepResult PathFollowing::make_result(int step, int iterations) const {
+StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule) const {
     StepResult r;
     r.step = step;
     r.load_factor = lambda_;
@@ -34,112 +38,47 @@ StepResult PathFollowing::make_result(int step, int iterations) const {
     r.control_displacement = control_value(u_);
     r.arc_length = arc_length_;
     r.iterations = iterations;
+    r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
     system_.report(u_, lambda_ * force_, r);
     return r;
 }
 
-PathFollowing::Attempt PathFollowing::attempt_increment(double h, const RunControl& control,
-                                                        int& iterations) {
+NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control) {
     const AnalysisSpec& a = model_.analysis;
-    const Eigen::VectorXd force_free = system_.gather(force_);
-    Eigen::VectorXd increment = Eigen::VectorXd::Zero(system_.free_count());
-    Eigen::VectorXd u_free = system_.gather(u_);
-    double delta_lambda = 0.0;
-    double last_step_norm = 0.0;
-
-    for (int it = 0; it <= a.max_iterations; ++it) {
-        iterations = it;
-        const bool freeze = it >= control.freeze_active_after;
-        if (!system_.evaluate(u_, ubar_, freeze)) return Attempt::non_finite;
-        const Eigen::VectorXd load_direction = force_free - system_.coupling();
-        const Eigen::VectorXd residual = lambda_ * force_free - system_.gather(system_.internal_force());
-        // Residual relative to the reference load: the largest converged load level so far
-        // (meaningful where λ passes zero after a limit point, and not inflated by a wild
-        // iterate); in the first increment, the load level being applied.
-        const double level = peak_lambda_ > 0.0 ? peak_lambda_
-                                                : std::max(std::abs(lambda_), std::abs(delta_lambda));
-        const double reference = std::max(level * load_direction.norm(), 1e-300);
-        const double relative = residual.norm() / reference;
-        if (!std::isfinite(relative)) return Attempt::non_finite;
+    StructureProblem problem(system_, u_, lambda_, force_, ubar_, control.freeze_active_after,
+                             control.freeze_hinges_after);
+    NewtonSettings settings;
+    settings.max_iterations = a.max_iterations;
+    settings.residual_tolerance = a.residual_tolerance;
+    settings.displacement_tolerance = a.displacement_tolerance;
+    settings.reference_level = peak_lambda_;
+    const int step = step_ + 1;
+    const IterationHook hook = [&](int iteration, double relative) {
+        trace_.push_back({step, iteration, relative});
         last_residual_ = relative;
-        trace_.push_back({step_ + 1, it, relative});
-        if (it > 0) {
-            const bool residual_ok = relative <= a.residual_tolerance;
-            // Relative to the increment, with a floor at round-off of the whole displacement
-            // (a tiny last increment that lands on a target would otherwise never pass).
-            const bool displacement_ok = last_step_norm <= a.displacement_tolerance * increment.norm() ||
-                                         last_step_norm <= 1e-12 * u_free.norm();
-            const bool settled = !system_.foundation().active_set_changed() &&
-                                 system_.foundation().active_set_consistent();
-            // Stagnation at round-off: the correction no longer moves the state and the
-            // residual is within a hundred times the tolerance (EA/EI ~ 1e5 at small loads).
-            const bool stagnated = last_step_norm <= 1e-12 * u_free.norm() &&
-                                   relative <= 100.0 * a.residual_tolerance;
-            if ((residual_ok || stagnated) && displacement_ok && settled) {
-                previous_increment_ = increment;
-                return Attempt::converged;
-            }
-            if (relative > 1e8) return Attempt::failed; // diverging
-        }
-        if (it == a.max_iterations) break;
-
-        if (!solver_.factorize(system_.tangent())) return Attempt::failed;
-        const Eigen::VectorXd du_r = solver_.solve(residual);
-        const Eigen::VectorXd du_f = solver_.solve(load_direction);
-
-        double dl = 0.0;
-        switch (a.scheme) {
-        case Scheme::load_control:
-            dl = it == 0 ? h : 0.0;
-            break;
-        case Scheme::displacement_control: {
-            const double target = it == 0 ? h * model_.analysis.control.sign : 0.0;
-            if (std::abs(du_f[control_equation_]) < 1e-300) return Attempt::failed;
-            dl = (target - du_r[control_equation_]) / du_f[control_equation_];
-            break;
-        }
-        case Scheme::arc_length: {
-            if (it == 0) {
-                // Predictor along the tangent; its sign follows the previous increment
-                // (Feng's criterion), which passes limit points without tracking the pivots.
-                double sign = h >= 0.0 ? 1.0 : -1.0;
-                if (previous_increment_.size() == du_f.size() && previous_increment_.norm() > 0.0)
-                    sign = previous_increment_.dot(du_f) >= 0.0 ? 1.0 : -1.0;
-                dl = sign * std::abs(h) / std::max(du_f.norm(), 1e-300);
-            } else {
-                const Eigen::VectorXd base = increment + du_r;
-                const double qa = du_f.squaredNorm();
-                const double qb = 2.0 * base.dot(du_f);
-                const double qc = base.squaredNorm() - h * h;
-                const double disc = qb * qb - 4.0 * qa * qc;
-                if (disc < 0.0) return Attempt::failed; // no point on the arc: cut the step
-                const double root = std::sqrt(disc);
-                const double l1 = (-qb + root) / (2.0 * qa);
-                const double l2 = (-qb - root) / (2.0 * qa);
-                // The root whose increment stays closest to the current one.
-                const double c1 = (base + l1 * du_f).dot(increment);
-                const double c2 = (base + l2 * du_f).dot(increment);
-                dl = c1 >= c2 ? l1 : l2;
-            }
-            break;
-        }
-        }
-        const Eigen::VectorXd du = du_r + dl * du_f;
-        if (!du.allFinite() || !std::isfinite(dl)) return Attempt::non_finite;
-        increment += du;
-        u_free += du;
-        delta_lambda += dl;
-        lambda_ += dl;
-        last_step_norm = du.norm();
-        system_.scatter(u_free, u_);
-        for (const PrescribedDisplacement& p : model_.prescribed) {
-            const int dof = dofs_per_node * p.node + p.dof;
-            u_[dof] = lambda_ * ubar_[dof];
-        }
+    };
+    NewtonResult result;
+    switch (a.scheme) {
+    case Scheme::load_control: {
+        LoadControl c(h);
+        result = solve_increment(problem, c, settings, solver_, hook);
+        break;
     }
-    return Attempt::failed;
+    case Scheme::displacement_control: {
+        DisplacementControl c(control_equation_, h * a.control.sign);
+        result = solve_increment(problem, c, settings, solver_, hook);
+        break;
+    }
+    case Scheme::arc_length: {
+        ArcLength c(h, previous_increment_);
+        result = solve_increment(problem, c, settings, solver_, hook);
+        break;
+    }
+    }
+    if (result.converged()) previous_increment_ = result.increment;
+    return result;
 }
 
 std::string PathFollowing::initial_mechanism() {
@@ -172,7 +111,11 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
     // Step 0: the unloaded state (springs evaluated so the contact set is known).
     system_.evaluate(u_, ubar_, false);
     system_.commit();
-    publish(make_result(0, 0));
+    if (system_.free_count() > 0 && solver_.factorize(system_.tangent())) {
+        const Eigen::VectorXd f = system_.gather(force_) - system_.coupling();
+        initial_flexibility_ = f.dot(solver_.solve(f));
+    }
+    publish(make_result(0, 0, Acceptance::none));
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
@@ -185,60 +128,65 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
             break;
         }
         // Land on the target instead of overshooting it (load and displacement control).
+        double step_h = h;
         if (a.scheme == Scheme::load_control && a.target_load_factor) {
             const double remaining = *a.target_load_factor - lambda_;
-            if (std::abs(h) > std::abs(remaining)) h = remaining;
+            if (std::abs(step_h) > std::abs(remaining)) step_h = remaining;
         }
         if (a.scheme == Scheme::displacement_control && a.target_displacement) {
             const double remaining = *a.target_displacement - control_value(u_);
-            if (std::abs(h) > std::abs(remaining)) h = remaining;
+            if (std::abs(step_h) > std::abs(remaining)) step_h = remaining;
         }
         const Eigen::VectorXd u_saved = u_;
         const double lambda_saved = lambda_;
-        int iterations = 0;
-        const Attempt outcome = attempt_increment(h, control, iterations);
-        summary.iterations += iterations;
-        if (outcome != Attempt::converged) {
+        const NewtonResult outcome = attempt_increment(step_h, control);
+        summary.iterations += outcome.iterations;
+        if (outcome.rule == Acceptance::residual) ++summary.accepted_by_residual;
+        if (outcome.rule == Acceptance::stagnation) ++summary.accepted_by_stagnation;
+        if (!outcome.converged()) {
+            // Under load control, the tangent where the failed increment ended tells whether
+            // the structure has passed its limit (a plastic mechanism or buckling).
+            const bool beyond_limit = a.scheme == Scheme::load_control && outcome.failure != NewtonFailure::non_finite &&
+                                      (outcome.negative_pivots_seen > 0 || tangent_shows_limit());
+            if (outcome.negative_pivots_seen > 0)
+                limit_evidence_ = "the tangent beyond it has " + std::to_string(outcome.negative_pivots_seen) +
+                                  " negative pivot(s)";
             u_ = u_saved;
             lambda_ = lambda_saved;
             system_.revert();
             ++summary.cut_steps;
-            h *= 0.5;
+            h = 0.5 * step_h;
             if (std::abs(h) >= h_min) continue;
+            summary.status = RunStatus::no_convergence;
             std::ostringstream why;
-            if (outcome == Attempt::non_finite) {
+            system_.evaluate(u_, ubar_, false); // leave the system at the last converged state
+            if (outcome.failure == NewtonFailure::non_finite) {
                 summary.status = RunStatus::non_finite;
                 why << "non-finite state in step " << step_ + 1;
                 if (!system_.non_finite_where().empty()) why << " at " << system_.non_finite_where();
-            } else if (a.scheme == Scheme::load_control && solver_.negative_pivots() > 0) {
+            } else if (beyond_limit || (a.scheme == Scheme::load_control && tangent_shows_limit())) {
                 summary.status = RunStatus::limit_load;
-                why << "limit load reached at load factor " << lambda_;
-            } else if (a.scheme == Scheme::load_control) {
-                summary.status = RunStatus::limit_load;
-                why << "limit load reached: no equilibrium beyond load factor " << lambda_;
+                why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
             } else {
-                summary.status = RunStatus::no_convergence;
-                why << "no convergence in step " << step_ + 1 << " at load factor " << lambda_;
+                why << "no convergence in step " << step_ + 1 << " at load factor " << lambda_ << " ("
+                    << to_string(outcome.failure) << " with the increment cut to " << std::abs(h) << ")";
             }
             summary.reason = why.str();
-            system_.evaluate(u_, ubar_, false); // leave the system at the last converged state
             break;
         }
         system_.commit();
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
         arc_length_ += previous_increment_.norm();
-        publish(make_result(step_, iterations));
-
-        if (a.adaptive) {
-            const double factor = std::sqrt(static_cast<double>(a.desired_iterations) /
-                                            std::max(iterations, 1));
-            h *= std::clamp(factor, 0.5, 2.0);
-        } else if (std::abs(h) < std::abs(a.initial_increment)) {
-            h = std::copysign(std::min(2.0 * std::abs(h), std::abs(a.initial_increment)), h); // recover after a cut
+        const std::string crossing = check_penetration();
+        publish(make_result(step_, outcome.iterations, outcome.rule));
+        if (!crossing.empty()) {
+            summary.status = RunStatus::penetration;
+            summary.reason = crossing;
+            break;
         }
-        if (a.max_increment > 0.0 && std::abs(h) > a.max_increment)
-            h = std::copysign(a.max_increment, h);
+
+        h = next_increment(h, step_h, outcome);
         // A target counts as reached within round-off of the increment that led to it.
         const double slack = 1e-9 * std::abs(a.initial_increment);
         const bool reached_lambda = a.target_load_factor &&
@@ -254,6 +202,60 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
     summary.steps = step_;
     summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return summary;
+}
+
+double PathFollowing::next_increment(double h, double used, const NewtonResult& outcome) const {
+    const AnalysisSpec& a = model_.analysis;
+    const double sign = h >= 0.0 ? 1.0 : -1.0;
+    double next = std::abs(h);
+    if (a.adaptive) {
+        // Grow or shrink toward the desired iteration count; a step whose Newton iterations
+        // converged fast at the end (contraction below 0.1 in the last iteration) counts the
+        // iterations that rate needed from the first residual, so state switches early in
+        // the step do not hold the increment down for the rest of the run.
+        const double factor = std::sqrt(static_cast<double>(a.desired_iterations) /
+                                        std::max(outcome.iterations, 1));
+        next = std::abs(used) * std::clamp(factor, 0.5, 2.0);
+        if (std::abs(used) < std::abs(h) && factor >= 1.0) next = std::max(next, std::abs(h)); // a landing step
+    } else if (next < std::abs(a.initial_increment)) {
+        next = std::min(2.0 * next, std::abs(a.initial_increment)); // recover after a cut
+    }
+    if (a.max_increment > 0.0) next = std::min(next, a.max_increment);
+    return sign * next;
+}
+
+std::string PathFollowing::check_penetration() const {
+    if (model_.analysis.allow_crossing) return {};
+    const std::string found = find_penetration(model_, u_);
+    if (found.empty()) return found;
+    return "step " + std::to_string(step_) + ": " + found;
+}
+
+bool PathFollowing::tangent_shows_limit() {
+    // The state the system was last evaluated at is at or beyond a limit point when its
+    // tangent has a negative pivot, or when its stiffness in the load direction (Bergan's
+    // current stiffness parameter, f·K₀⁻¹f / f·K⁻¹f) has fallen below 1e-4 of the initial one:
+    // a plastic mechanism, whose only remaining stiffness is the hinges' regularising hardening.
+    if (!solver_.factorize(system_.tangent())) {
+        limit_evidence_ = "singular tangent";
+        return true;
+    }
+    if (solver_.negative_pivots() > 0) {
+        limit_evidence_ = std::to_string(solver_.negative_pivots()) + " negative pivot(s)";
+        return true;
+    }
+    const Eigen::VectorXd f = system_.gather(force_) - system_.coupling();
+    const double flexibility = f.dot(solver_.solve(f));
+    if (initial_flexibility_ > 0.0 && flexibility > 0.0) {
+        const double stiffness = initial_flexibility_ / flexibility;
+        if (stiffness < 1e-4) {
+            std::ostringstream s;
+            s << "stiffness in the load direction " << stiffness << " of the initial: a plastic mechanism";
+            limit_evidence_ = s.str();
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace plastica

@@ -9,6 +9,7 @@
 #include "analysis/structural_system.hpp"
 #include "model/model.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/newton_solver.hpp"
 
 #include <atomic>
 #include <functional>
@@ -24,6 +25,10 @@ struct RunControl {
     // Unilateral springs keep their active set after this many iterations of one increment,
     // then the set is re-checked at convergence (remedy for chattering).
     int freeze_active_after = 12;
+    // Hinge states (loading or unloading ends, active capacity sides) are decided by the
+    // predictor and first correction, then kept until equilibrium, re-checked there and
+    // re-decided if the state contradicts them (no cycling of a kink inside Newton).
+    int freeze_hinges_after = 1000;
 };
 
 // Per-iteration record for solver diagnostics (quadratic convergence checks).
@@ -46,10 +51,13 @@ public:
     const std::vector<IterationTrace>& trace() const { return trace_; }
 
 private:
-    enum class Attempt { converged, failed, non_finite };
-    Attempt attempt_increment(double h, const RunControl& control, int& iterations);
+    NewtonResult attempt_increment(double h, const RunControl& control);
+    double next_increment(double h, double used, const NewtonResult& outcome) const;
+    bool tangent_shows_limit();
+    // Empty, or what passed through what in the last converged step.
+    std::string check_penetration() const;
     double control_value(const Eigen::VectorXd& u) const;
-    StepResult make_result(int step, int iterations) const;
+    StepResult make_result(int step, int iterations, Acceptance rule) const;
 
     Model model_;
     StructuralSystem system_;
@@ -64,6 +72,8 @@ private:
     double last_residual_ = 0.0;
     int step_ = 0;
     int control_equation_ = -1;
+    double initial_flexibility_ = 0.0; // f·K₀⁻¹f of the unloaded structure
+    std::string limit_evidence_;
     std::vector<IterationTrace> trace_;
 };
 

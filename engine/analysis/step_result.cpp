@@ -10,6 +10,7 @@ const char* to_string(RunStatus status) {
     case RunStatus::non_finite: return "non_finite";
     case RunStatus::interrupted: return "interrupted";
     case RunStatus::step_limit: return "step_limit";
+    case RunStatus::penetration: return "penetration";
     }
     return "unknown";
 }

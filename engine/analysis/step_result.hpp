@@ -4,6 +4,7 @@
 
 #include "element/basic_law.hpp"
 #include "element/corotational_beam.hpp"
+#include "solver/newton_solver.hpp"
 
 #include <array>
 #include <string>
@@ -32,6 +33,7 @@ struct StepResult {
     double control_displacement = 0.0;
     double arc_length = 0.0;        // cumulative path length, monotone
     int iterations = 0;
+    Acceptance accepted_by = Acceptance::none; // which rule accepted the step
     int negative_pivots = 0;
     double residual = 0.0;          // relative residual at convergence
     std::vector<double> displacement; // 3 per node: ux, uy, rotation
@@ -45,7 +47,7 @@ struct StepResult {
     int plastic_hinge_count = 0;    // element ends at capacity
 };
 
-enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit };
+enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit, penetration };
 
 struct RunSummary {
     RunStatus status = RunStatus::completed;
@@ -53,6 +55,8 @@ struct RunSummary {
     int steps = 0;
     int iterations = 0;
     int cut_steps = 0;
+    int accepted_by_residual = 0;
+    int accepted_by_stagnation = 0;
     double seconds = 0.0;
 };
 

@@ -39,8 +39,8 @@ std::vector<std::vector<int>> assembly_blocks(const Model& model, const std::vec
     return blocks;
 }
 
-std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0) {
-    if (s.steel) return std::make_unique<PlasticHingeLaw>(s, L0);
+std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, std::array<bool, 2> capacity_at) {
+    if (s.steel) return std::make_unique<PlasticHingeLaw>(s, L0, capacity_at);
     return std::make_unique<ElasticLaw>(s.E * s.area, s.E * s.inertia, L0);
 }
 
@@ -50,18 +50,30 @@ StructuralSystem::StructuralSystem(const Model& model)
     : element_specs_(model.elements), nodes_(model.nodes), foundation_(model),
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
+    // One plastic hinge per node where exactly two inelastic elements meet: the first
+    // element's end carries the capacity, the second's keeps only its pseudo-spring.
+    std::vector<int> members(model.nodes.size(), 0);
+    for (const ElementSpec& e : model.elements) ++members[e.node_i], ++members[e.node_j];
+    std::vector<bool> hinge_taken(model.nodes.size(), false);
     elements_.reserve(model.elements.size());
     for (const ElementSpec& e : model.elements) {
         const Node& a = model.nodes[e.node_i];
         const Node& b = model.nodes[e.node_j];
-        elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y)));
+        std::array<bool, 2> capacity_at{true, true};
+        const int ends[2] = {e.node_i, e.node_j};
+        for (int end = 0; end < 2; ++end) {
+            if (members[ends[end]] != 2 || !model.sections[e.section].steel) continue;
+            capacity_at[end] = !hinge_taken[ends[end]];
+            hinge_taken[ends[end]] = true;
+        }
+        elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), capacity_at));
     }
     internal_ = Eigen::VectorXd::Zero(dof_count());
     coupling_ = Eigen::VectorXd::Zero(free_count_);
 }
 
 bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar,
-                                bool freeze_active) {
+                                bool freeze_active, bool freeze_hinges) {
     internal_.setZero();
     coupling_.setZero();
     assembler_.set_zero();
@@ -75,6 +87,7 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
             dofs[3 + a] = dofs_per_node * spec.node_j + a;
         }
         for (int a = 0; a < 6; ++a) d[a] = u[dofs[a]];
+        elements_[e].freeze_states(freeze_hinges);
         elements_[e].compute(d, f, &k);
         if (!f.allFinite() || !k.allFinite()) {
             non_finite_where_ = "element " + std::to_string(e + 1) + " (nodes " +
@@ -99,6 +112,12 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         internal_.segment<3>(base) += fs;
         assembler_.add(elements_.size() + s, foundation_.tangent(s));
     }
+    return true;
+}
+
+bool StructuralSystem::hinge_states_consistent() const {
+    for (const CorotationalBeam& e : elements_)
+        if (!e.law().states_consistent()) return false;
     return true;
 }
 

@@ -26,13 +26,16 @@ public:
 
     // Evaluates at the full displacement vector u; ubar is the prescribed-displacement
     // direction. Returns false (and names the element) when a force is not finite.
-    bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, bool freeze_active);
+    bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, bool freeze_active,
+                  bool freeze_hinges = false);
 
     const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū, free DOFs
     const SparseMatrix& tangent() const { return assembler_.matrix(); }
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
+    // Whether every element's hinge states (frozen or not) agree with the evaluated state.
+    bool hinge_states_consistent() const;
 
     Eigen::VectorXd gather(const Eigen::VectorXd& full) const;
     void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;

@@ -18,6 +18,7 @@ struct HingeReport {
     double ei_ratio = 1.0;    // EI_T / EI of the end section
     double ea_ratio = 1.0;    // EA_T / EA
     int failed_fibres = 0;
+    int section_failures = 0; // section solves that did not converge (stiffness kept)
 };
 
 class BasicLaw {
@@ -31,6 +32,10 @@ public:
     virtual HingeReport hinge(int /*end*/) const { return {}; }
     // Committed plastic part of the basic deformations (zero for an elastic law).
     virtual Eigen::Vector3d plastic_deformation() const { return Eigen::Vector3d::Zero(); }
+    // Hinge states (loading/unloading, active capacity sides) settle inside Newton like a
+    // contact active set: frozen after some iterations, then checked for consistency.
+    virtual void freeze_states(bool /*frozen*/) {}
+    virtual bool states_consistent() const { return true; }
     virtual std::unique_ptr<BasicLaw> clone() const = 0;
 };
 

@@ -37,6 +37,7 @@ public:
     void compute(const Vector6& d, Vector6& force, Matrix6* tangent);
     void commit();
     void revert();
+    void freeze_states(bool frozen) { law_->freeze_states(frozen); }
 
     BeamForces forces() const;
     const BasicLaw& law() const { return *law_; }

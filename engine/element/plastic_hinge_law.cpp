@@ -2,127 +2,243 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plastica {
 
 namespace {
-// η below this is a fully formed hinge; the floor keeps the series flexibility finite.
-constexpr double eta_floor = 1e-12;
-// An end within this fraction of its capacity is on the capacity curve.
+// η below this is a fully formed pseudo-spring hinge; the floor keeps its hardening positive.
+constexpr double eta_floor = 1e-6;
+// An end within this fraction of its capacity is on the capacity surface.
 constexpr double on_capacity = 1e-9;
+constexpr double no_limit = std::numeric_limits<double>::infinity();
 } // namespace
 
-PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0)
+PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, std::array<bool, 2> capacity_at)
     : EA_(section.E * section.area), EI_(section.E * section.inertia), L0_(L0),
-      sections_{FibreSection(section), FibreSection(section)} {}
-
-Eigen::Matrix3d PlasticHingeLaw::stiffness(const std::array<double, 2>& eta,
-                                           double axial_ratio) const {
-    // Flexibility of the elastic beam plus the two hinge flexibilities (1 − η)/η · L/(6EI).
-    const double unit = L0_ / (6.0 * EI_);
-    Eigen::Matrix2d F;
-    F << 2.0 * unit, -unit, -unit, 2.0 * unit;
-    for (int end = 0; end < 2; ++end) {
-        const double h = std::max(eta[end], eta_floor);
-        F(end, end) += (1.0 - h) / h * unit;
+      sections_{FibreSection(section), FibreSection(section)},
+      k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)),
+      moment_scale_(sections_[0].moment_capacity(0.0, 1.0)), capacity_at_(capacity_at) {
+    rows_.assign(6, YieldRow{});
+    for (YieldRow& r : rows_) r.limit = no_limit;
+    const FibreSection& s = sections_[0];
+    rows_[tension].a = Eigen::Vector3d(1.0 / s.axial_capacity_tension(), 0.0, 0.0);
+    rows_[compression].a = Eigen::Vector3d(-1.0 / s.axial_capacity_compression(), 0.0, 0.0);
+    for (Row r : {tension, compression}) {
+        rows_[r].limit = 1.0;
+        rows_[r].hardening = regularising_hardening * rows_[r].a.dot(k_elastic_ * rows_[r].a);
     }
-    Eigen::Matrix3d k = Eigen::Matrix3d::Zero();
-    k(0, 0) = axial_ratio * EA_ / L0_;
-    k.bottomRightCorner<2, 2>() = F.inverse();
-    return k;
 }
 
-double PlasticHingeLaw::capacity(int end, double N, double m) const {
-    return sections_[end].moment_capacity(N, m >= 0.0 ? 1.0 : -1.0);
+void PlasticHingeLaw::set_loading_surfaces() {
+    // The pseudo-spring of a partly yielded end: s·m ≤ s·m_c + S·(rotation of the spring), with
+    // s the sign of the committed moment; unit row a = s·∂m/∂q / M_p, so H = S / M_p².
+    for (int end = 0; end < 2; ++end) {
+        YieldRow& row = rows_[spring_i + end];
+        const double m = section_moment(q_c_, end);
+        if (eta_c_[end] >= 1.0 || m == 0.0) {
+            row.limit = no_limit;
+            continue;
+        }
+        const double s = m > 0.0 ? 1.0 : -1.0;
+        row.a.setZero();
+        row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
+        row.limit = row.a.dot(q_c_);
+        const double eta = std::max(eta_c_[end], eta_floor);
+        const double S = 6.0 * EI_ / L0_ * eta / (1.0 - eta);
+        row.hardening = S / (moment_scale_ * moment_scale_);
+    }
+}
+
+void PlasticHingeLaw::linearise_capacity(int end, double N, double s) {
+    YieldRow& row = rows_[capacity_i + end];
+    if (!capacity_at_[end]) {
+        row.limit = no_limit;
+        return;
+    }
+    const CapacityCurve& curve = sections_[end].hinge_capacity(s);
+    const double n = std::clamp(N, curve.lowest(), curve.highest());
+    const CapacityValue v = curve.at(n);
+    // s·m − M_p′(N*)·N ≤ M_p(N*) − M_p′(N*)·N*, scaled by 1/M_p(0).
+    row.a.setZero();
+    row.a[0] = -v.slope / moment_scale_;
+    row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
+    row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[capacity_i + end];
+    row.hardening = regularising_hardening * row.a.dot(k_elastic_ * row.a);
+    sign_t_[end] = s;
+}
+
+double PlasticHingeLaw::capacity_margin(const Eigen::Vector3d& q, int end) const {
+    const double m = section_moment(q, end);
+    const double s = m >= 0.0 ? 1.0 : -1.0;
+    const double cap = sections_[end].hinge_moment_capacity(q[0], s) + hardened_[capacity_i + end] * moment_scale_;
+    return cap - std::abs(m);
+}
+
+bool PlasticHingeLaw::outside_capacity(const Eigen::Vector3d& q) const {
+    for (Row r : {tension, compression})
+        if (rows_[r].a.dot(q) > 1.0 + hardened_[r]) return true;
+    for (int end = 0; end < 2; ++end)
+        if (capacity_at_[end] && capacity_margin(q, end) < -1e-12 * moment_scale_) return true;
+    return false;
+}
+
+Eigen::Matrix3d PlasticHingeLaw::curved_tangent(const ReturnMap& r) const {
+    if (curvature_t_ <= 0.0) return r.tangent;
+    // The capacity normal turns with N: K̃ = (K⁻¹ + Σγ ∂a/∂q)⁻¹ replaces K.
+    Eigen::Matrix3d flexibility = k_elastic_.inverse();
+    flexibility(0, 0) += curvature_t_;
+    return elastoplastic_tangent(flexibility.inverse(), rows_, r.active);
 }
 
 void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
-    const Eigen::Vector3d de = e - e_committed_;
-    // Loading or unloading per end, judged by the elastic trial increment of its moment.
-    const Eigen::Vector3d dq_elastic = elastic_basic_stiffness(EA_, EI_, L0_) * de;
-    std::array<double, 2> eta{};
+    if (e == e_c_ && !loading_c_.empty()) {
+        // At the committed state the response is one-sided: give the tangent of continued
+        // loading (the rows that carried the last step's flow), the predictor of the next step.
+        consistent_ = true;
+        active_t_.clear();
+        gamma_t_.clear();
+        flow_t_.setZero();
+        q = q_c_;
+        k = elastoplastic_tangent(k_elastic_, rows_, loading_c_);
+        e_t_ = e;
+        q_t_ = q;
+        return;
+    }
+    const Eigen::Vector3d q_trial = q_c_ + k_elastic_ * (e - e_c_);
+    const bool springs = eta_c_[0] < 1.0 || eta_c_[1] < 1.0;
+    curvature_t_ = 0.0;
+    if (!springs && active_c_.empty() && !(frozen_ && !active_t_.empty()) && !outside_capacity(q_trial)) {
+        // Elastic: no yielded end, inside the capacity surface.
+        consistent_ = true;
+        active_t_.clear();
+        gamma_t_.clear();
+        flow_t_.setZero();
+        q = q_trial;
+        k = k_elastic_;
+        e_t_ = e;
+        q_t_ = q;
+        return;
+    }
+    for (Row r : {tension, compression}) rows_[r].limit = 1.0 + hardened_[r];
+    // Linearise the capacity at the trial state, return, and repeat at the returned N.
+    double N = q_trial[0];
+    std::array<double, 2> sign{};
     for (int end = 0; end < 2; ++end) {
-        const double m = section_moment(q_committed_, end);
-        const double dm = section_moment(dq_elastic, end);
-        const bool unloading = m * dm < 0.0;
-        eta[end] = unloading ? 1.0 : committed_end_[end].ei_ratio;
+        const double m = section_moment(q_trial, end);
+        sign[end] = m != 0.0 ? (m > 0.0 ? 1.0 : -1.0) : (section_moment(q_c_, end) >= 0.0 ? 1.0 : -1.0);
     }
-    // The axial term stays elastic. A section yielding in bending has EA_T → 0; applied to
-    // the whole member that would leave its interior free along the axis (a spurious
-    // mechanism). The N–M interaction acts through the capacity M_p(N) instead.
-    const double axial_ratio = 1.0;
-
-    std::array<bool, 2> at_capacity{false, false};
-    k = stiffness(eta, axial_ratio);
-    q = q_committed_ + k * de;
-    // An end that crosses the capacity curve becomes a free hinge for the rest of the
-    // increment; recomputing with its η = 0 lets the other end carry the redistribution.
-    for (int pass = 0; pass < 2; ++pass) {
-        bool changed = false;
-        for (int end = 0; end < 2; ++end) {
-            const double m = section_moment(q, end);
-            if (!at_capacity[end] && std::abs(m) > capacity(end, q[0], m)) {
-                at_capacity[end] = true;
-                eta[end] = 0.0;
-                changed = true;
-            }
-        }
-        if (!changed) break;
-        k = stiffness(eta, axial_ratio);
-        q = q_committed_ + k * de;
+    std::vector<int> working = frozen_ ? active_t_ : active_c_;
+    ReturnMap r;
+    for (int pass = 0; pass < 30; ++pass) {
+        for (int end = 0; end < 2; ++end) linearise_capacity(end, N, sign[end]);
+        r = return_map(k_elastic_, q_trial, rows_, working, frozen_);
+        if (!r.ok) break;
+        const bool on_curve = std::any_of(r.active.begin(), r.active.end(),
+                                          [](int row) { return row == capacity_i || row == capacity_j; });
+        if (!on_curve || std::abs(r.q[0] - N) <= 1e-12 * sections_[0].axial_capacity_tension()) break;
+        N = r.q[0];
+        working = r.active;
     }
-    // Return every end at capacity exactly onto the curve M = ±M_p(N).
-    for (int end = 0; end < 2; ++end) {
-        const double m = section_moment(q, end);
-        const double cap = capacity(end, q[0], m);
-        if (at_capacity[end] || std::abs(m) > cap) {
-            const double projected = std::copysign(cap, m);
-            if (end == 0) q[1] = -projected; else q[2] = projected;
-        }
+    if (!r.ok) {
+        // No solution found: make the increment fail rather than accept a wrong state.
+        q.setConstant(std::numeric_limits<double>::quiet_NaN());
+        k = k_elastic_;
+        return;
     }
-    e_trial_ = e;
-    q_trial_ = q;
+    for (std::size_t i = 0; i < r.active.size(); ++i) {
+        const int row = r.active[i];
+        if (row != capacity_i && row != capacity_j) continue;
+        const int end = row - capacity_i;
+        const CapacityCurve& curve = sections_[end].hinge_capacity(sign_t_[end]);
+        curvature_t_ += std::max(r.multipliers[i], 0.0) * -curve.at(r.q[0]).curvature / moment_scale_;
+    }
+    consistent_ = r.consistent;
+    active_t_ = r.active;
+    gamma_t_ = r.multipliers;
+    flow_t_ = r.flow;
+    q = r.q;
+    k = curved_tangent(r);
+    e_t_ = e;
+    q_t_ = q;
 }
 
 void PlasticHingeLaw::commit() {
     for (int end = 0; end < 2; ++end) {
         FibreSection& section = sections_[end];
         HingeReport& report = committed_end_[end];
-        const double N = q_trial_[0];
-        const double m = section_moment(q_trial_, end);
-        const double cap = capacity(end, N, m);
+        const double N = q_t_[0];
+        const double m = section_moment(q_t_, end);
+        const double cap = section.hinge_moment_capacity(N, m >= 0.0 ? 1.0 : -1.0);
         report.utilisation = cap > 0.0 ? std::min(1.0, std::abs(m) / cap) : 1.0;
+        const bool flowing = std::any_of(active_t_.begin(), active_t_.end(), [&](int r) {
+            return r == capacity_i + end || r == tension || r == compression;
+        });
+        const bool at_capacity =
+            flowing || (capacity_at_[end] && capacity_margin(q_t_, end) <= on_capacity * moment_scale_);
         ScmResult scm;
-        if (report.utilisation < 1.0 - on_capacity)
-            scm = section.solve_for_forces(N, m);
-        if (scm.outcome == ScmOutcome::converged) {
+        if (!at_capacity) scm = section.solve_for_forces(N, m);
+        if (!at_capacity && scm.outcome == ScmOutcome::converged) {
             section.commit();
             report.ei_ratio = std::clamp(scm.ei_tangent / section.elastic_ei(), 0.0, 1.0);
             report.ea_ratio = std::clamp(scm.ea_tangent / section.elastic_ea(), 0.0, 1.0);
             report.state = report.ei_ratio < 1.0 - 1e-12 ? HingeState::yielding : HingeState::elastic;
+            eta_c_[end] = report.ei_ratio;
+        } else if (!at_capacity && scm.outcome == ScmOutcome::no_convergence) {
+            // The section solve failed: keep the previous stiffness and say so.
+            section.revert();
+            ++report.section_failures;
         } else {
-            // On the capacity curve the section has no unique deformation: a free hinge.
+            // On the capacity surface (or between the fibre polygon and its rounding): the
+            // capacity rows govern; no pseudo-spring.
             section.revert();
             report.utilisation = 1.0;
             report.ei_ratio = 0.0;
-            report.state = HingeState::plastic;
+            report.ea_ratio = 0.0;
+            report.state = at_capacity ? HingeState::plastic : HingeState::yielding;
+            eta_c_[end] = 1.0;
         }
         report.failed_fibres = section.failed_fibres();
         if (report.failed_fibres > 0) report.state = HingeState::failed;
     }
-    e_committed_ = e_trial_;
-    q_committed_ = q_trial_;
+    // Hardening memory of the capacity rows: a row that flowed keeps the limit it reached, so
+    // the next step starts on the surface instead of being pulled back onto it.
+    for (std::size_t i = 0; i < active_t_.size() && i < gamma_t_.size(); ++i) {
+        const int r = active_t_[i];
+        if (r >= capacity_i && gamma_t_[i] > 0.0) hardened_[r] += rows_[r].hardening * gamma_t_[i];
+    }
+    e_c_ = e_t_;
+    q_c_ = q_t_;
+    plastic_c_ += flow_t_;
+    loading_c_.clear();
+    for (std::size_t i = 0; i < active_t_.size() && i < gamma_t_.size(); ++i)
+        if (gamma_t_[i] > 0.0) loading_c_.push_back(active_t_[i]);
+    // Only capacity rows carry over as a warm start; the loading surfaces move with the state.
+    active_c_.clear();
+    for (int r : active_t_)
+        if (r >= capacity_i) active_c_.push_back(r);
+    active_t_ = active_c_;
+    gamma_t_.assign(active_t_.size(), 0.0);
+    flow_t_.setZero();
+    set_loading_surfaces();
+    loading_c_.erase(std::remove_if(loading_c_.begin(), loading_c_.end(),
+                                    [&](int r) { return !std::isfinite(rows_[r].limit); }),
+                     loading_c_.end());
 }
 
 void PlasticHingeLaw::revert() {
-    e_trial_ = e_committed_;
-    q_trial_ = q_committed_;
+    e_t_ = e_c_;
+    q_t_ = q_c_;
+    flow_t_.setZero();
+    active_t_ = active_c_;
+    gamma_t_.assign(active_t_.size(), 0.0);
+    consistent_ = true;
     for (FibreSection& s : sections_) s.revert();
 }
 
 Eigen::Vector3d PlasticHingeLaw::plastic_deformation() const {
     // What the elastic beam cannot account for: e − k_el⁻¹ q.
-    return e_committed_ - elastic_basic_stiffness(EA_, EI_, L0_).inverse() * q_committed_;
+    return e_c_ - k_elastic_.inverse() * q_c_;
 }
 
 } // namespace plastica

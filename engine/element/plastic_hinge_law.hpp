@@ -1,22 +1,43 @@
 // Refined plastic hinges at both ends of an elastic beam (concentrated plasticity, CS-ASA
-// style): each end is a pseudo-spring S = (6EI/L)·η/(1 − η) with η = EI_T/EI of the end
-// section from the Strain Compatibility Method, in series with the elastic beam (Chan & Chui
-// 2000); η = 1 keeps the end rigid, η = 0 makes it a free hinge. Forces are integrated
-// incrementally from the committed state; an end that would leave the N–M capacity curve is
-// returned onto it (no drift), and an end whose moment decreases unloads elastically. The
-// axial stiffness stays EA/L; EA_T of each end section is reported, not applied.
+// style), written as stress-resultant plasticity of the basic forces q = [N, M_i, M_j].
+//
+// Each end has two kinds of yield rows, solved together by one return map from the committed
+// state (backward Euler, element/return_map.hpp):
+// - the seed's pseudo-spring while the end section is partly yielded: a loading surface
+//   through the committed moment with hardening S = (6EI/L)·η/(1 − η), η = EI_T/EI of the
+//   section by the Strain Compatibility Method at the committed state (Chan & Chui 2000). Its
+//   multiplier decides loading or unloading, so the response stays continuous where an end
+//   turns round (an elastic-trial sign test makes it jump there, and Newton then cycles);
+// - the section's N–M capacity M_p(N) (section/capacity_curve.hpp, smooth through the fibres'
+//   fully plastic states) and the squash loads: the force state stays inside and flows along
+//   the normal, plastic rotation and plastic axial strain alike, so N never exceeds the squash
+//   load and catenary action comes out right. The curved surface is met by linearising it at
+//   the current N and repeating the linear return map until N stops moving (Newton on the
+//   surface); the consistent tangent includes its curvature.
+// Every row carries some hardening: the capacity rows 1e-6 of the elastic stiffness along
+// their normal, remembered from step to step (the moment at capacity grows by 1e-6·4EI/L per
+// radian of plastic rotation). It keeps the tangent regular where a whole member flows at the
+// squash load.
 #pragma once
 
 #include "element/basic_law.hpp"
+#include "element/return_map.hpp"
 #include "section/fibre_section.hpp"
 
 #include <array>
+#include <vector>
 
 namespace plastica {
 
 class PlasticHingeLaw final : public BasicLaw {
 public:
-    PlasticHingeLaw(const SectionSpec& section, double L0);
+    static constexpr double regularising_hardening = 1e-6;
+
+    // capacity_at: which ends carry capacity rows. Where two elements meet at a node their end
+    // moments are equal, so one plastic hinge serves the node; two would leave its rotation
+    // free (the split of the plastic rotation between them is arbitrary) and the tangent
+    // singular. The other end keeps its pseudo-spring.
+    PlasticHingeLaw(const SectionSpec& section, double L0, std::array<bool, 2> capacity_at = {true, true});
 
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     void commit() override;
@@ -24,6 +45,8 @@ public:
     bool has_hinges() const override { return true; }
     HingeReport hinge(int end) const override { return committed_end_[end]; }
     Eigen::Vector3d plastic_deformation() const override;
+    void freeze_states(bool frozen) override { frozen_ = frozen; }
+    bool states_consistent() const override { return consistent_; }
     std::unique_ptr<BasicLaw> clone() const override {
         return std::make_unique<PlasticHingeLaw>(*this);
     }
@@ -34,16 +57,44 @@ private:
     static double section_moment(const Eigen::Vector3d& q, int end) {
         return end == 0 ? -q[1] : q[2];
     }
-    Eigen::Matrix3d stiffness(const std::array<double, 2>& eta, double axial_ratio) const;
-    double capacity(int end, double N, double m) const;
+    void set_loading_surfaces();
+    // Linearises end `end`'s capacity row at axial force N for bending sign s; false when the
+    // end carries no capacity.
+    void linearise_capacity(int end, double N, double s);
+    bool outside_capacity(const Eigen::Vector3d& q) const;
+    double capacity_margin(const Eigen::Vector3d& q, int end) const; // M_p(N)+offset − |m|, ≥ 0 inside
+    Eigen::Matrix3d curved_tangent(const ReturnMap& r) const;
 
     double EA_, EI_, L0_;
     std::array<FibreSection, 2> sections_;
-    Eigen::Vector3d e_committed_ = Eigen::Vector3d::Zero();
-    Eigen::Vector3d q_committed_ = Eigen::Vector3d::Zero();
-    Eigen::Vector3d e_trial_ = Eigen::Vector3d::Zero();
-    Eigen::Vector3d q_trial_ = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d k_elastic_;
+    double moment_scale_;          // plastic moment at N = 0
+    // Rows: 0, 1 pseudo-springs of ends i, j; 2, 3 their capacity; 4, 5 tension and
+    // compression squash loads.
+    enum Row { spring_i = 0, spring_j = 1, capacity_i = 2, capacity_j = 3, tension = 4, compression = 5 };
+    std::vector<YieldRow> rows_;
+    std::array<bool, 2> capacity_at_;
+    std::array<double, 2> sign_t_{1.0, 1.0};       // bending sign of each capacity row
+    std::array<double, 6> hardened_{};             // remembered hardening of each row's limit
+
+    // Committed state.
+    Eigen::Vector3d e_c_ = Eigen::Vector3d::Zero();
+    Eigen::Vector3d q_c_ = Eigen::Vector3d::Zero();
+    Eigen::Vector3d plastic_c_ = Eigen::Vector3d::Zero(); // accumulated flow
+    std::array<double, 2> eta_c_{1.0, 1.0};              // pseudo-spring η for the next step
+    std::vector<int> active_c_;
+    std::vector<int> loading_c_; // rows that flowed in the last step: the predictor's tangent
     std::array<HingeReport, 2> committed_end_{};
+
+    // Trial state.
+    Eigen::Vector3d e_t_ = Eigen::Vector3d::Zero();
+    Eigen::Vector3d q_t_ = Eigen::Vector3d::Zero();
+    Eigen::Vector3d flow_t_ = Eigen::Vector3d::Zero();
+    std::vector<int> active_t_;
+    std::vector<double> gamma_t_;
+    double curvature_t_ = 0.0; // Σγ·(−M_p″)/M_p of active capacity rows
+    bool frozen_ = false;
+    bool consistent_ = true;
 };
 
 } // namespace plastica

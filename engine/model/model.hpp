@@ -100,6 +100,9 @@ struct AnalysisSpec {
     std::optional<double> target_load_factor;
     std::optional<double> target_displacement; // on the control DOF, signed as reported
     DofRef control;                            // displacement control and reporting
+    // Self-contact is not modelled: a structure that passes through itself stops the run,
+    // unless the scene allows it (a cantilever rolled into two turns, say).
+    bool allow_crossing = false;
 };
 
 struct ReportSpec {

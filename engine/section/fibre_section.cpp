@@ -7,6 +7,36 @@
 
 namespace plastica {
 
+namespace {
+
+struct Point2 {
+    double n, m;
+};
+
+// Counter-clockwise convex hull (monotone chain), collinear points dropped.
+std::vector<Point2> convex_hull(std::vector<Point2> points) {
+    std::sort(points.begin(), points.end(),
+              [](const Point2& a, const Point2& b) { return a.n < b.n || (a.n == b.n && a.m < b.m); });
+    auto cross = [](const Point2& o, const Point2& a, const Point2& b) {
+        return (a.n - o.n) * (b.m - o.m) - (a.m - o.m) * (b.n - o.n);
+    };
+    if (points.size() < 3) return points;
+    std::vector<Point2> hull(2 * points.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 1e-13) --k;
+        hull[k++] = points[i];
+    }
+    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 1e-13) --k;
+        hull[k++] = points[i];
+    }
+    hull.resize(k - 1);
+    return hull;
+}
+
+} // namespace
+
 FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
     const SteelSpec& steel = *spec.steel;
     E_ = steel.E;
@@ -20,6 +50,7 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
     build_capacity_curves();
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
+    build_hinge_capacity();
 }
 
 SectionResponse FibreSection::set_trial_deformation(double eps0, double curvature) {
@@ -129,6 +160,37 @@ void FibreSection::build_capacity_curves() {
             curve.push_back(p);
         }
         std::sort(curve.begin(), curve.end(), [](const CapacityPoint& a, const CapacityPoint& b) { return a.N < b.N; });
+    }
+}
+
+void FibreSection::build_hinge_capacity() {
+    // The fibres' capacity polygon (convex hull of both curves' breakpoints): its upper chain
+    // carries positive bending, its lower chain negative; each becomes a smooth curve.
+    std::vector<Point2> points;
+    for (const auto& curve : capacity_)
+        for (const CapacityPoint& c : curve) points.push_back({c.N, c.M});
+    const std::vector<Point2> hull = convex_hull(points);
+    if (hull.empty()) return;
+    std::size_t lowest = 0, highest = 0;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+        if (hull[i].n < hull[lowest].n) lowest = i;
+        if (hull[i].n > hull[highest].n) highest = i;
+    }
+    // Counter-clockwise: from the lowest N to the highest runs the lower chain, back the upper.
+    for (int side = 0; side < 2; ++side) {
+        std::vector<double> N, M;
+        const std::size_t from = side == 0 ? highest : lowest;
+        const std::size_t to = side == 0 ? lowest : highest;
+        for (std::size_t i = from;; i = (i + 1) % hull.size()) {
+            N.push_back(hull[i].n);
+            M.push_back(std::abs(hull[i].m));
+            if (i == to) break;
+        }
+        if (side == 0) {
+            std::reverse(N.begin(), N.end());
+            std::reverse(M.begin(), M.end());
+        }
+        hinge_capacity_[side] = CapacityCurve(std::move(N), std::move(M));
     }
 }
 

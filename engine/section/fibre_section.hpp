@@ -6,6 +6,7 @@
 #pragma once
 
 #include "material/bilinear_steel.hpp"
+#include "section/capacity_curve.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -52,6 +53,11 @@ public:
 
     // Fully plastic moment for axial force N, for positive (sign > 0) or negative bending.
     double moment_capacity(double N, double sign) const;
+    // Every (N, M) the fibres can carry at their limit stresses is a convex polygon (a sum of
+    // one segment per fibre). The plastic hinge's capacity: the smooth curve through its
+    // breakpoints, for positive (sign > 0) and negative bending.
+    const CapacityCurve& hinge_capacity(double sign) const { return hinge_capacity_[sign > 0.0 ? 0 : 1]; }
+    double hinge_moment_capacity(double N, double sign) const { return hinge_capacity(sign).at(N).moment; }
     double axial_capacity_tension() const { return ny_tension_; }
     double axial_capacity_compression() const { return ny_compression_; }
     double elastic_ea() const { return ea0_; }
@@ -87,6 +93,8 @@ private:
     };
     void build_capacity_curves();
     std::array<std::vector<CapacityPoint>, 2> capacity_;
+    std::array<CapacityCurve, 2> hinge_capacity_;
+    void build_hinge_capacity();
     double E_ = 0.0;
     double ea0_ = 0.0, ei0_ = 0.0;
     double ny_tension_ = 0.0, ny_compression_ = 0.0;

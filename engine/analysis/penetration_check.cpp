@@ -1,0 +1,98 @@
+#include "analysis/penetration_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <vector>
+
+namespace plastica {
+
+namespace {
+
+struct Point {
+    double x, y;
+};
+
+double orientation(const Point& a, const Point& b, const Point& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Proper crossing: each segment's ends lie strictly on both sides of the other's line,
+// beyond a round-off band (segments that merely touch are not a penetration).
+bool cross(const Point& a, const Point& b, const Point& c, const Point& d, double band) {
+    const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+    const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+    return ((o1 > band && o2 < -band) || (o1 < -band && o2 > band)) &&
+           ((o3 > band && o4 < -band) || (o3 < -band && o4 > band));
+}
+
+std::string where(const Point& p) {
+    std::ostringstream s;
+    s << "[" << p.x << ", " << p.y << "]";
+    return s.str();
+}
+
+} // namespace
+
+std::string find_penetration(const Model& model, const Eigen::VectorXd& u) {
+    const std::size_t n = model.nodes.size();
+    std::vector<Point> at(n);
+    for (std::size_t i = 0; i < n; ++i)
+        at[i] = {model.nodes[i].x + u[dofs_per_node * i], model.nodes[i].y + u[dofs_per_node * i + 1]};
+
+    // Element chords, swept along x: only pairs whose x ranges overlap are tested.
+    const std::vector<ElementSpec>& elements = model.elements;
+    std::vector<std::size_t> order(elements.size());
+    std::iota(order.begin(), order.end(), 0);
+    auto low = [&](std::size_t e) { return std::min(at[elements[e].node_i].x, at[elements[e].node_j].x); };
+    auto high = [&](std::size_t e) { return std::max(at[elements[e].node_i].x, at[elements[e].node_j].x); };
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return low(a) < low(b); });
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const ElementSpec& e = elements[order[k]];
+        const Point &a = at[e.node_i], &b = at[e.node_j];
+        const double la = std::hypot(b.x - a.x, b.y - a.y);
+        for (std::size_t m = k + 1; m < order.size() && low(order[m]) <= high(order[k]); ++m) {
+            const ElementSpec& f = elements[order[m]];
+            if (f.node_i == e.node_i || f.node_i == e.node_j || f.node_j == e.node_i || f.node_j == e.node_j) continue;
+            const Point &c = at[f.node_i], &d = at[f.node_j];
+            const double band = 1e-9 * la * std::hypot(d.x - c.x, d.y - c.y);
+            if (cross(a, b, c, d, band))
+                return "the structure passes through itself: element " + std::to_string(order[k] + 1) +
+                       " crosses element " + std::to_string(order[m] + 1) + " near " + where(a);
+        }
+    }
+
+    // A half model may not cross its symmetry line (it would pass through its mirror image).
+    if (model.report.mirror_x) {
+        const double line = *model.report.mirror_x;
+        double side = 0.0;
+        for (const Node& node : model.nodes) side += node.x - line;
+        const double sign = side >= 0.0 ? 1.0 : -1.0;
+        double size = 0.0;
+        for (const Node& node : model.nodes) size = std::max(size, std::abs(node.x - line));
+        for (std::size_t i = 0; i < n; ++i)
+            if (sign * (at[i].x - line) < -1e-6 * size)
+                return "the structure passes through its mirror image: node " + std::to_string(i + 1) +
+                       " crossed the symmetry line x = " + std::to_string(line) + " at " + where(at[i]);
+    }
+
+    // A node the unilateral base does not hold may not pass below it.
+    if (model.base) {
+        std::vector<bool> held(n, false);
+        for (const FoundationSpring& s : model.springs)
+            if (s.unilateral) held[s.node] = true;
+        const BaseLine& base = *model.base;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double gap = (at[i].x - base.point[0]) * base.normal[0] + (at[i].y - base.point[1]) * base.normal[1];
+            const double gap0 = (model.nodes[i].x - base.point[0]) * base.normal[0] +
+                                (model.nodes[i].y - base.point[1]) * base.normal[1];
+            if (!held[i] && gap0 >= 0.0 && gap < 0.0)
+                return "node " + std::to_string(i + 1) + " passed through the rigid base at " + where(at[i]) +
+                       " (the base holds only the nodes its springs are on)";
+        }
+    }
+    return {};
+}
+
+} // namespace plastica

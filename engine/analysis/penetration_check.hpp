@@ -1,0 +1,16 @@
+// Detects a deformed structure that has passed through itself (two element chords that cross,
+// or a half model crossing its symmetry line) or through the rigid base at a node the base
+// does not hold. Contact between members is not modelled, so such a state is not physical.
+#pragma once
+
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+#include <string>
+
+namespace plastica {
+
+// Empty when the state is admissible; otherwise says what crossed what, and where.
+std::string find_penetration(const Model& model, const Eigen::VectorXd& u);
+
+} // namespace plastica

@@ -1,0 +1,35 @@
+#include "analysis/structure_problem.hpp"
+
+namespace plastica {
+
+StructureProblem::StructureProblem(StructuralSystem& system, Eigen::VectorXd& u, double& lambda,
+                                   const Eigen::VectorXd& force, const Eigen::VectorXd& ubar,
+                                   int contact_freeze, int hinge_freeze)
+    : system_(system), u_(u), lambda_(lambda), ubar_(ubar), force_free_(system.gather(force)),
+      u_free_(system.gather(u)), contact_freeze_(contact_freeze), hinge_freeze_(hinge_freeze) {
+    for (int dof = 0; dof < ubar.size(); ++dof)
+        if (ubar[dof] != 0.0 && system.equation(dof) < 0) prescribed_.push_back(dof);
+}
+
+bool StructureProblem::evaluate(int iteration, bool release) {
+    const bool contact_frozen = iteration >= contact_freeze_ && !release;
+    const bool hinges_frozen = iteration >= hinge_freeze_ && !release;
+    if (!system_.evaluate(u_, ubar_, contact_frozen, hinges_frozen)) return false;
+    load_direction_ = force_free_ - system_.coupling();
+    residual_ = lambda_ * force_free_ - system_.gather(system_.internal_force());
+    return true;
+}
+
+bool StructureProblem::settled() const {
+    const Foundation& f = system_.foundation();
+    return !f.active_set_changed() && f.active_set_consistent() && system_.hinge_states_consistent();
+}
+
+void StructureProblem::move(const Eigen::VectorXd& dx, double dlambda) {
+    u_free_ += dx;
+    lambda_ += dlambda;
+    system_.scatter(u_free_, u_);
+    for (int dof : prescribed_) u_[dof] = lambda_ * ubar_[dof];
+}
+
+} // namespace plastica

@@ -1,0 +1,41 @@
+// The structure as a Newton problem: equilibrium λ·F − f_int(u) = 0 on the free DOFs, with
+// prescribed displacements scaled by λ too (their coupling K_fp·ū joins the load direction).
+#pragma once
+
+#include "analysis/structural_system.hpp"
+#include "solver/newton_solver.hpp"
+
+namespace plastica {
+
+class StructureProblem final : public NewtonProblem {
+public:
+    // u (full DOF vector) and lambda are the state, moved in place; force and ubar are the
+    // reference loads and prescribed displacements (full).
+    // Contact sets are frozen from iteration `contact_freeze`, hinge states from `hinge_freeze`.
+    StructureProblem(StructuralSystem& system, Eigen::VectorXd& u, double& lambda,
+                     const Eigen::VectorXd& force, const Eigen::VectorXd& ubar,
+                     int contact_freeze, int hinge_freeze);
+
+    bool evaluate(int iteration, bool release) override;
+    const Eigen::VectorXd& residual() const override { return residual_; }
+    const Eigen::VectorXd& load_direction() const override { return load_direction_; }
+    const SparseMatrix& tangent() const override { return system_.tangent(); }
+    bool settled() const override;
+    void move(const Eigen::VectorXd& dx, double dlambda) override;
+    double load_factor() const override { return lambda_; }
+    double state_norm() const override { return u_free_.norm(); }
+
+private:
+    StructuralSystem& system_;
+    Eigen::VectorXd& u_;
+    double& lambda_;
+    const Eigen::VectorXd& ubar_;
+    Eigen::VectorXd force_free_;
+    Eigen::VectorXd u_free_;
+    Eigen::VectorXd residual_;
+    Eigen::VectorXd load_direction_;
+    std::vector<int> prescribed_; // full DOF indices with ū ≠ 0
+    int contact_freeze_, hinge_freeze_;
+};
+
+} // namespace plastica

@@ -1,0 +1,152 @@
+#include "solver/newton_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace plastica {
+
+const char* to_string(Acceptance rule) {
+    switch (rule) {
+    case Acceptance::none: return "none";
+    case Acceptance::residual: return "residual";
+    case Acceptance::stagnation: return "stagnation";
+    }
+    return "unknown";
+}
+
+const char* to_string(NewtonFailure failure) {
+    switch (failure) {
+    case NewtonFailure::none: return "none";
+    case NewtonFailure::diverged: return "diverged";
+    case NewtonFailure::singular: return "singular tangent";
+    case NewtonFailure::non_finite: return "non-finite state";
+    case NewtonFailure::no_constraint_root: return "no point on the constraint";
+    case NewtonFailure::iteration_limit: return "iteration limit";
+    case NewtonFailure::unsettled: return "active set did not settle";
+    }
+    return "unknown";
+}
+
+NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constraint,
+                             const NewtonSettings& settings, LinearSolver& solver,
+                             const IterationHook& hook) {
+    NewtonResult result;
+    double last_correction = 0.0;
+    double predictor_norm = 0.0;
+    double damping = 1.0;
+    std::vector<double> history; // residual norms of the iterations so far
+    bool release = false; // re-decide frozen active sets at the next evaluation
+    if (!problem.evaluate(0, false)) {
+        result.failure = NewtonFailure::non_finite;
+        return result;
+    }
+    for (int it = 0; it <= settings.max_iterations; ++it) {
+        result.iterations = it;
+        const Eigen::VectorXd& residual = problem.residual();
+        const Eigen::VectorXd& load = problem.load_direction();
+        if (result.increment.size() != residual.size()) result.increment = Eigen::VectorXd::Zero(residual.size());
+        // Residual relative to the reference load: the largest converged load level so far
+        // (meaningful where λ passes zero after a limit point, and not inflated by a wild
+        // iterate); in the first increment, the load level being applied.
+        const double level = settings.reference_level > 0.0
+                                 ? settings.reference_level
+                                 : std::max(std::abs(problem.load_factor()), std::abs(result.load_change));
+        const double relative = residual.norm() / std::max(level * load.norm(), 1e-300);
+        if (!std::isfinite(relative)) {
+            result.failure = NewtonFailure::non_finite;
+            return result;
+        }
+        const double previous_relative = it > 0 ? result.residual : relative;
+        result.residual = relative;
+        if (hook) hook(it, relative);
+        if (it > 0) {
+            // The correction relative to the increment, with a floor at round-off of the whole
+            // state (a tiny last increment that lands on a target would otherwise never pass).
+            // The correction is small relative to the increment, or below 1e-9 of the whole
+            // state: a piecewise-linear law (a hinge turning round) can make Newton swap
+            // between two states that far apart without ever settling, and a tiny last
+            // increment that lands on a target has no other scale.
+            const double floor = 1e-9 * problem.state_norm();
+            const bool small_correction = last_correction <= settings.displacement_tolerance * result.increment.norm() ||
+                                          last_correction <= floor;
+            const bool settled = problem.settled();
+            // Equilibrium with frozen active sets that the state contradicts: let them be
+            // re-decided once, then freeze again (an active-set iteration).
+            release = !settled && relative <= settings.residual_tolerance * settings.stagnation_factor;
+            if (small_correction && settled) {
+                if (relative <= settings.residual_tolerance) {
+                    result.rule = Acceptance::residual;
+                    return result;
+                }
+                // Round-off stagnation: the state no longer moves, the residual no longer falls,
+                // and it is within a few times the tolerance (a stiff membrane's floor).
+                if (last_correction <= floor && relative > 0.5 * previous_relative &&
+                    relative <= settings.stagnation_factor * settings.residual_tolerance) {
+                    result.rule = Acceptance::stagnation;
+                    return result;
+                }
+            }
+            if (relative > 1e8) {
+                result.failure = NewtonFailure::diverged;
+                return result;
+            }
+        }
+        if (it == settings.max_iterations) break;
+
+        if (!solver.factorize(problem.tangent())) {
+            result.failure = NewtonFailure::singular;
+            return result;
+        }
+        result.negative_pivots_seen = std::max(result.negative_pivots_seen, solver.negative_pivots());
+        const Eigen::VectorXd du_r = solver.solve(residual);
+        const Eigen::VectorXd du_f = solver.solve(load);
+        const double dl = constraint.load_change(it, result.increment, du_r, du_f);
+        if (!std::isfinite(dl)) {
+            result.failure = NewtonFailure::no_constraint_root;
+            return result;
+        }
+        Eigen::VectorXd du = du_r + dl * du_f;
+        double step_dl = dl;
+        // A correction far larger than the increment itself comes from a nearly singular
+        // tangent (a hinge assumed flowing that will unload): keep it to the increment's size.
+        if (it == 0) predictor_norm = du.norm();
+        const double cap = settings.correction_cap * std::max(predictor_norm, result.increment.norm());
+        if (it > 0 && du.norm() > cap && cap > 0.0) {
+            const double scale = cap / du.norm();
+            du *= scale;
+            step_dl *= scale;
+        }
+        if (!du.allFinite()) {
+            result.failure = NewtonFailure::non_finite;
+            return result;
+        }
+        const double before = residual.norm();
+        // A cycle (the residual repeating that of two or three iterations ago) means Newton
+        // jumps across a kink of a piecewise-linear law back and forth: shorten the step
+        // (halved again at each repetition) so that it lands between the two sides.
+        history.push_back(before);
+        const std::size_t h = history.size();
+        for (std::size_t back = 2; back <= 3 && h > back; ++back)
+            if (std::abs(history[h - 1 - back] - before) <= 1e-3 * before) {
+                damping = std::max(damping * 0.5, 1.0 / 64.0);
+                break;
+            }
+        if (damping < 1.0 && it > 0) {
+            du *= damping;
+            step_dl *= damping;
+        }
+        problem.move(du, step_dl);
+        if (!problem.evaluate(it + 1, release)) {
+            result.failure = NewtonFailure::non_finite;
+            return result;
+        }
+        result.increment += du;
+        result.load_change += step_dl;
+        last_correction = du.norm();
+    }
+    result.failure = problem.settled() ? NewtonFailure::iteration_limit : NewtonFailure::unsettled;
+    return result;
+}
+
+} // namespace plastica

@@ -1,0 +1,77 @@
+// Newton's method for one increment of a path-following analysis, R(x, λ) = λ f − r(x) = 0,
+// bordered by a constraint on the increment that fixes the load change at every iteration
+// (load control, displacement control, arc length: analysis/increment_constraints.hpp).
+// The problem supplies the residual, the tangent and an iteration hook (active sets of
+// contact and hinges: frozen after some iterations, then checked at convergence); Newton
+// decides acceptance and says which rule accepted the state.
+#pragma once
+
+#include "solver/block_assembler.hpp"
+#include "solver/linear_solver.hpp"
+
+#include <Eigen/Dense>
+#include <functional>
+
+namespace plastica {
+
+class NewtonProblem {
+public:
+    virtual ~NewtonProblem() = default;
+    // Evaluates residual and tangent at the current state at the given iteration of the
+    // increment. State-dependent parts (contact, hinges) may keep their previous choice after
+    // some iterations; `release` asks them to decide afresh. False when a value is not finite.
+    virtual bool evaluate(int iteration, bool release) = 0;
+    virtual const Eigen::VectorXd& residual() const = 0;       // λ f − r(x), free DOFs
+    virtual const Eigen::VectorXd& load_direction() const = 0; // ∂R/∂λ
+    virtual const SparseMatrix& tangent() const = 0;           // ∂r/∂x
+    // Active sets unchanged by the last evaluation and consistent with the state.
+    virtual bool settled() const { return true; }
+    virtual void move(const Eigen::VectorXd& dx, double dlambda) = 0;
+    virtual double load_factor() const = 0;
+    virtual double state_norm() const = 0; // ‖x‖, for the round-off floor of a correction
+};
+
+// Fixes the load change of each iteration; NaN when no state satisfies the constraint.
+class IncrementConstraint {
+public:
+    virtual ~IncrementConstraint() = default;
+    // Iteration 0 is the predictor; `increment` is Δx of the step so far.
+    virtual double load_change(int iteration, const Eigen::VectorXd& increment,
+                               const Eigen::VectorXd& du_residual, const Eigen::VectorXd& du_load) = 0;
+};
+
+enum class Acceptance { none, residual, stagnation };
+enum class NewtonFailure { none, diverged, singular, non_finite, no_constraint_root, iteration_limit, unsettled };
+
+const char* to_string(Acceptance rule);
+const char* to_string(NewtonFailure failure);
+
+struct NewtonSettings {
+    int max_iterations = 30;
+    double residual_tolerance = 1e-6;     // ‖R‖ relative to the reference load
+    double displacement_tolerance = 1e-8; // ‖δx‖ relative to ‖Δx‖ of the increment
+    double reference_level = 0.0;         // |λ| the residual is measured against (0: this increment's)
+    // Stagnation at round-off is accepted only within this multiple of the tolerance.
+    double stagnation_factor = 10.0;
+    // Largest corrector, relative to the larger of the predictor and the increment so far.
+    double correction_cap = 1.0;
+};
+
+struct NewtonResult {
+    Acceptance rule = Acceptance::none;
+    NewtonFailure failure = NewtonFailure::none;
+    int iterations = 0;
+    double residual = 0.0; // relative, at the last evaluation
+    Eigen::VectorXd increment; // Δx of the increment
+    double load_change = 0.0;  // Δλ
+    int negative_pivots_seen = 0; // most negative pivots of any tangent factorised
+    bool converged() const { return rule != Acceptance::none; }
+};
+
+using IterationHook = std::function<void(int iteration, double relative_residual)>;
+
+NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constraint,
+                             const NewtonSettings& settings, LinearSolver& solver,
+                             const IterationHook& hook = {});
+
+} // namespace plastica
