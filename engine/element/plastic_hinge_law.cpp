@@ -19,7 +19,7 @@ PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, std::arr
       sections_{FibreSection(section), FibreSection(section)},
       k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)),
       moment_scale_(sections_[0].moment_capacity(0.0, 1.0)), capacity_at_(capacity_at) {
-    rows_.assign(6, YieldRow{});
+    rows_.assign(row_count, YieldRow{});
     for (YieldRow& r : rows_) r.limit = no_limit;
     const FibreSection& s = sections_[0];
     rows_[tension].a = Eigen::Vector3d(1.0 / s.axial_capacity_tension(), 0.0, 0.0);
@@ -50,28 +50,32 @@ void PlasticHingeLaw::set_loading_surfaces() {
     }
 }
 
-void PlasticHingeLaw::linearise_capacity(int end, double N, double s) {
-    YieldRow& row = rows_[capacity_i + end];
-    if (!capacity_at_[end]) {
-        row.limit = no_limit;
-        return;
+void PlasticHingeLaw::linearise_capacity(double N) {
+    for (int r = capacity_i; r <= negative_j; ++r) {
+        YieldRow& row = rows_[r];
+        const int end = row_end(r);
+        if (!capacity_at_[end]) {
+            row.limit = no_limit;
+            continue;
+        }
+        const double s = row_sign(r);
+        const CapacityCurve& curve = sections_[end].hinge_capacity(s);
+        const double n = std::clamp(N, curve.lowest(), curve.highest());
+        const CapacityValue v = curve.at(n);
+        // s·m − M_p′(N*)·N ≤ M_p(N*) − M_p′(N*)·N*, scaled by 1/M_p(0).
+        row.a.setZero();
+        row.a[0] = -v.slope / moment_scale_;
+        row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
+        row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[r];
+        row.hardening = regularising_hardening * row.a.dot(k_elastic_ * row.a);
     }
-    const CapacityCurve& curve = sections_[end].hinge_capacity(s);
-    const double n = std::clamp(N, curve.lowest(), curve.highest());
-    const CapacityValue v = curve.at(n);
-    // s·m − M_p′(N*)·N ≤ M_p(N*) − M_p′(N*)·N*, scaled by 1/M_p(0).
-    row.a.setZero();
-    row.a[0] = -v.slope / moment_scale_;
-    row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
-    row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[capacity_i + end];
-    row.hardening = regularising_hardening * row.a.dot(k_elastic_ * row.a);
-    sign_t_[end] = s;
 }
 
 double PlasticHingeLaw::capacity_margin(const Eigen::Vector3d& q, int end) const {
     const double m = section_moment(q, end);
     const double s = m >= 0.0 ? 1.0 : -1.0;
-    const double cap = sections_[end].hinge_moment_capacity(q[0], s) + hardened_[capacity_i + end] * moment_scale_;
+    const double cap = sections_[end].hinge_moment_capacity(q[0], s) +
+                       hardened_[(s > 0.0 ? capacity_i : negative_i) + end] * moment_scale_;
     return cap - std::abs(m);
 }
 
@@ -123,19 +127,14 @@ void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen:
     for (Row r : {tension, compression}) rows_[r].limit = 1.0 + hardened_[r];
     // Linearise the capacity at the trial state, return, and repeat at the returned N.
     double N = q_trial[0];
-    std::array<double, 2> sign{};
-    for (int end = 0; end < 2; ++end) {
-        const double m = section_moment(q_trial, end);
-        sign[end] = m != 0.0 ? (m > 0.0 ? 1.0 : -1.0) : (section_moment(q_c_, end) >= 0.0 ? 1.0 : -1.0);
-    }
     std::vector<int> working = frozen_ ? active_t_ : active_c_;
     ReturnMap r;
     for (int pass = 0; pass < 30; ++pass) {
-        for (int end = 0; end < 2; ++end) linearise_capacity(end, N, sign[end]);
+        linearise_capacity(N);
         r = return_map(k_elastic_, q_trial, rows_, working, frozen_);
         if (!r.ok) break;
         const bool on_curve = std::any_of(r.active.begin(), r.active.end(),
-                                          [](int row) { return row == capacity_i || row == capacity_j; });
+                                          [](int row) { return capacity_row(row); });
         if (!on_curve || std::abs(r.q[0] - N) <= 1e-12 * sections_[0].axial_capacity_tension()) break;
         N = r.q[0];
         working = r.active;
@@ -148,9 +147,8 @@ void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen:
     }
     for (std::size_t i = 0; i < r.active.size(); ++i) {
         const int row = r.active[i];
-        if (row != capacity_i && row != capacity_j) continue;
-        const int end = row - capacity_i;
-        const CapacityCurve& curve = sections_[end].hinge_capacity(sign_t_[end]);
+        if (!capacity_row(row)) continue;
+        const CapacityCurve& curve = sections_[row_end(row)].hinge_capacity(row_sign(row));
         curvature_t_ += std::max(r.multipliers[i], 0.0) * -curve.at(r.q[0]).curvature / moment_scale_;
     }
     consistent_ = r.consistent;
@@ -172,7 +170,7 @@ void PlasticHingeLaw::commit() {
         const double cap = section.hinge_moment_capacity(N, m >= 0.0 ? 1.0 : -1.0);
         report.utilisation = cap > 0.0 ? std::min(1.0, std::abs(m) / cap) : 1.0;
         const bool flowing = std::any_of(active_t_.begin(), active_t_.end(), [&](int r) {
-            return r == capacity_i + end || r == tension || r == compression;
+            return (capacity_row(r) && row_end(r) == end) || r == tension || r == compression;
         });
         const bool at_capacity =
             flowing || (capacity_at_[end] && capacity_margin(q_t_, end) <= on_capacity * moment_scale_);

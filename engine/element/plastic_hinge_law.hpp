@@ -58,9 +58,8 @@ private:
         return end == 0 ? -q[1] : q[2];
     }
     void set_loading_surfaces();
-    // Linearises end `end`'s capacity row at axial force N for bending sign s; false when the
-    // end carries no capacity.
-    void linearise_capacity(int end, double N, double s);
+    // Linearises the capacity rows at axial force N (disabled at an end without capacity).
+    void linearise_capacity(double N);
     bool outside_capacity(const Eigen::Vector3d& q) const;
     double capacity_margin(const Eigen::Vector3d& q, int end) const; // M_p(N)+offset − |m|, ≥ 0 inside
     Eigen::Matrix3d curved_tangent(const ReturnMap& r) const;
@@ -69,13 +68,16 @@ private:
     std::array<FibreSection, 2> sections_;
     Eigen::Matrix3d k_elastic_;
     double moment_scale_;          // plastic moment at N = 0
-    // Rows: 0, 1 pseudo-springs of ends i, j; 2, 3 their capacity; 4, 5 tension and
-    // compression squash loads.
-    enum Row { spring_i = 0, spring_j = 1, capacity_i = 2, capacity_j = 3, tension = 4, compression = 5 };
+    // Rows: 0, 1 pseudo-springs of ends i, j; 2, 3 their capacity in positive bending, 4, 5
+    // in negative bending; 6, 7 tension and compression squash loads.
+    enum Row { spring_i = 0, spring_j = 1, capacity_i = 2, capacity_j = 3, negative_i = 4, negative_j = 5,
+               tension = 6, compression = 7, row_count = 8 };
+    static bool capacity_row(int r) { return r >= capacity_i && r <= negative_j; }
+    static int row_end(int r) { return (r - capacity_i) % 2; }
+    static double row_sign(int r) { return r < negative_i ? 1.0 : -1.0; }
     std::vector<YieldRow> rows_;
     std::array<bool, 2> capacity_at_;
-    std::array<double, 2> sign_t_{1.0, 1.0};       // bending sign of each capacity row
-    std::array<double, 6> hardened_{};             // remembered hardening of each row's limit
+    std::array<double, row_count> hardened_{};     // remembered hardening of each row's limit
 
     // Committed state.
     Eigen::Vector3d e_c_ = Eigen::Vector3d::Zero();

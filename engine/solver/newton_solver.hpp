@@ -54,7 +54,7 @@ struct NewtonSettings {
     // Stagnation at round-off is accepted only within this multiple of the tolerance.
     double stagnation_factor = 10.0;
     // Largest corrector, relative to the larger of the predictor and the increment so far.
-    double correction_cap = 1.0;
+    double correction_cap = 1e300;
 };
 
 struct NewtonResult {
