@@ -1,5 +1,7 @@
 #include "stability_cases.hpp"
 
+#include "robustness_cases.hpp"
+
 #include "analysis/path_following.hpp"
 #include "scene_reader.hpp"
 #include "verification/cantilever_elastica.hpp"
@@ -201,6 +203,7 @@ std::vector<StabilityCase> stability_cases() {
     cases.push_back({"cantilever, tip load PL²/EI = 10", "1 element", tip_load(1, 1e6, 10.0, "increment = 0.02\n"), completed, nullptr});
     cases.push_back({"cantilever, tip load PL²/EI = 10", "2000 elements", tip_load(2000, 1e6, 10.0, "increment = 0.1\nresidual_tolerance = 1e-5\n"), completed,
                      deflection_near(10.0, 1e-3)});
+    for (StabilityCase& c : robustness_cases()) cases.push_back(std::move(c));
     return cases;
 }
 
