@@ -7,7 +7,7 @@ namespace plastica {
 CurveWriter::CurveWriter(const std::string& path) : out_(path) {
     if (!out_) throw std::runtime_error("cannot write " + path);
     out_ << "step,load_factor,load,control_displacement,iterations,contact_count,hinge_count,"
-            "plastic_hinge_count,base_reaction,contact_length,negative_pivots\n";
+            "plastic_hinge_count,base_reaction,contact_length,negative_pivots,accepted_by,residual\n";
     out_.precision(12);
 }
 
@@ -15,7 +15,7 @@ void CurveWriter::operator()(const StepResult& r) {
     out_ << r.step << ',' << r.load_factor << ',' << r.load << ',' << r.control_displacement << ','
          << r.iterations << ',' << r.contact_count << ',' << r.hinge_count << ','
          << r.plastic_hinge_count << ',' << r.base_reaction << ',' << r.contact_length << ','
-         << r.negative_pivots << '\n';
+         << r.negative_pivots << ',' << to_string(r.accepted_by) << ',' << r.residual << '\n';
     out_.flush();
 }
 

@@ -29,6 +29,10 @@ std::string to_json(const RunReport& r) {
     j << "  \"status\": " << quoted(to_string(r.summary.status)) << ",\n  \"reason\": " << quoted(r.summary.reason) << ",\n";
     j << "  \"steps\": " << r.summary.steps << ",\n  \"iterations\": " << r.summary.iterations
       << ",\n  \"cut_steps\": " << r.summary.cut_steps << ",\n";
+    // Which rule accepted the steps: the residual within its tolerance, or round-off
+    // stagnation within ten times it (never more).
+    j << "  \"accepted_by\": {\"residual\": " << r.summary.accepted_by_residual
+      << ", \"stagnation\": " << r.summary.accepted_by_stagnation << "},\n";
     j << "  \"final\": {\"load_factor\": " << r.last.load_factor << ", \"load\": " << r.last.load
       << ", \"control_displacement\": " << r.last.control_displacement << ", \"contact_count\": "
       << r.last.contact_count << ", \"hinge_count\": " << r.last.hinge_count << "},\n";
