@@ -172,8 +172,12 @@ void PlasticHingeLaw::commit() {
         const bool flowing = std::any_of(active_t_.begin(), active_t_.end(), [&](int r) {
             return (capacity_row(r) && row_end(r) == end) || r == tension || r == compression;
         });
+        // A plastic end stays plastic until its moment falls (no flicker between plastic and
+        // yielding while it rides the surface without flowing in one step).
+        const bool held = report.state == HingeState::plastic &&
+                          std::abs(m) >= std::abs(section_moment(q_c_, end)) * (1.0 - 1e-12);
         const bool at_capacity =
-            flowing || (capacity_at_[end] && capacity_margin(q_t_, end) <= on_capacity * moment_scale_);
+            flowing || held || (capacity_at_[end] && capacity_margin(q_t_, end) <= on_capacity * moment_scale_);
         ScmResult scm;
         if (!at_capacity) scm = section.solve_for_forces(N, m);
         if (!at_capacity && scm.outcome == ScmOutcome::converged) {

@@ -1,0 +1,84 @@
+// The three shipped ring scenes against their stored reference values (tests/reference/
+// ring_curves.csv), and plastic hinges that do not flicker: an end leaves the capacity surface
+// only when its moment falls.
+#include "analysis_helpers.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace plastica;
+using namespace plastica::testing;
+
+namespace {
+
+std::string source(const std::string& relative) { return std::string(PLASTICA_SOURCE_DIR) + "/" + relative; }
+
+Run run_file(const std::string& relative) {
+    std::ifstream in(source(relative));
+    std::stringstream text;
+    text << in.rdbuf();
+    return run_scene(text.str());
+}
+
+double load_at(const std::vector<StepResult>& steps, double d) {
+    for (std::size_t k = 1; k < steps.size(); ++k) {
+        const double a = steps[k - 1].control_displacement, b = steps[k].control_displacement;
+        if (a <= d && d <= b && b > a) return steps[k - 1].load + (d - a) / (b - a) * (steps[k].load - steps[k - 1].load);
+    }
+    return NAN;
+}
+
+} // namespace
+
+TEST_CASE("The shipped rings stay within 0.1 % of their stored curves", "[ring][reference]") {
+    std::ifstream in(source("tests/reference/ring_curves.csv"));
+    REQUIRE(in);
+    std::map<std::string, std::vector<std::pair<double, double>>> reference;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#' || line.rfind("scene,", 0) == 0) continue;
+        std::stringstream row(line);
+        std::string scene, d, p;
+        std::getline(row, scene, ',');
+        std::getline(row, d, ',');
+        std::getline(row, p, ',');
+        reference[scene].push_back({std::stod(d), std::stod(p)});
+    }
+    REQUIRE(reference.size() == 3);
+    for (const auto& [scene, points] : reference) {
+        const Run r = run_file("models/" + scene + ".toml");
+        REQUIRE(r.summary.status == RunStatus::completed);
+        for (const auto& [d, p] : points) {
+            CAPTURE(scene, d);
+            // The elastic scenes are unchanged to round-off; the inelastic ring's hinges at
+            // capacity follow the smooth N–M curve with axial flow (0.045 % at δ = 100).
+            CHECK(load_at(r.steps, d) == Approx(p).epsilon(scene == "ring_inelastic" ? 1e-3 : 1e-9));
+        }
+    }
+}
+
+TEST_CASE("Hinge states do not flicker: an end leaves the capacity only when its moment falls", "[ring][plasticity]") {
+    for (const char* scene : {"models/ring_inelastic.toml", "models/gallery/portal_frame.toml"}) {
+        const Run r = run_file(scene);
+        REQUIRE(r.summary.status == RunStatus::completed);
+        int reversals = 0, unloadings = 0;
+        for (std::size_t k = 1; k < r.steps.size(); ++k)
+            for (std::size_t e = 0; e < r.steps[k].elements.size(); ++e)
+                for (int end = 0; end < 2; ++end) {
+                    const HingeReport& before = r.steps[k - 1].elements[e].hinge[end];
+                    const HingeReport& now = r.steps[k].elements[e].hinge[end];
+                    if (before.state != HingeState::plastic || now.state == HingeState::plastic) continue;
+                    const BeamForces& fb = r.steps[k - 1].elements[e].forces;
+                    const BeamForces& fn = r.steps[k].elements[e].forces;
+                    const double mb = std::abs(end == 0 ? fb.moment_i : fb.moment_j);
+                    const double mn = std::abs(end == 0 ? fn.moment_i : fn.moment_j);
+                    if (mn < mb) ++unloadings; // left the surface by unloading: allowed
+                    else ++reversals;
+                }
+        CAPTURE(scene, unloadings);
+        CHECK(reversals == 0);
+    }
+}
