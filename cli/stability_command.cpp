@@ -22,18 +22,18 @@ int stability_command(const Args& args) {
     const fs::path folder = vm["output"].as<std::string>();
     fs::create_directories(folder);
     std::ofstream csv(folder / "stability.csv");
-    csv << "case,parameter,outcome,expected_met,steps,iterations,cut_steps,max_residual,max_negative_pivots,peak_load,problem\n";
-    std::printf("%-46s %-24s %-15s %6s %6s %5s %9s %4s  %s\n", "case", "parameter", "outcome", "steps", "iters", "cuts",
-                "residual", "neg", "verdict");
+    csv << "case,parameter,outcome,expected_met,steps,iterations,cut_steps,max_residual,max_negative_pivots,peak_load,seconds,problem\n";
+    std::printf("%-46s %-24s %-15s %6s %6s %5s %9s %4s %8s  %s\n", "case", "parameter", "outcome", "steps", "iters", "cuts",
+                "residual", "neg", "seconds", "verdict");
     int failed = 0;
     for (const StabilityCase& c : stability_cases()) {
         const StabilityRow r = run_stability_case(c);
         failed += !r.passed;
         csv << '"' << r.name << "\",\"" << r.parameter << "\"," << r.outcome << ',' << r.passed << ',' << r.steps << ','
             << r.iterations << ',' << r.cut_steps << ',' << r.max_residual << ',' << r.max_negative_pivots << ',' << r.peak_load
-            << ",\"" << r.problem << "\"\n";
-        std::printf("%-46s %-24s %-15s %6d %6d %5d %9.1e %4d  %s\n", r.name.c_str(), r.parameter.c_str(), r.outcome.c_str(),
-                    r.steps, r.iterations, r.cut_steps, r.max_residual, r.max_negative_pivots,
+            << ',' << r.seconds << ",\"" << r.problem << "\"\n";
+        std::printf("%-46s %-24s %-15s %6d %6d %5d %9.1e %4d %8.3f  %s\n", r.name.c_str(), r.parameter.c_str(), r.outcome.c_str(),
+                    r.steps, r.iterations, r.cut_steps, r.max_residual, r.max_negative_pivots, r.seconds,
                     r.passed ? "as expected" : ("UNEXPECTED: " + r.problem).c_str());
     }
     std::cout << (failed ? std::to_string(failed) + " cases did not behave as expected" : "every case behaved as expected")

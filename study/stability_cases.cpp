@@ -227,6 +227,7 @@ StabilityRow run_stability_case(const StabilityCase& c) {
     row.steps = summary.steps;
     row.iterations = summary.iterations;
     row.cut_steps = summary.cut_steps;
+    row.seconds = summary.seconds;
     if (!finite) row.problem = "a converged step holds NaN or Inf";
     else if (summary.status != c.expected) row.problem = std::string("expected ") + to_string(c.expected);
     else if (steps.empty()) row.problem = "no converged step";

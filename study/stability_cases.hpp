@@ -25,6 +25,7 @@ struct StabilityRow {
     bool passed = false;
     int steps = 0, iterations = 0, cut_steps = 0, max_negative_pivots = 0;
     double max_residual = 0.0, peak_load = 0.0;
+    double seconds = 0.0; // analysis wall time
 };
 
 std::vector<StabilityCase> stability_cases();

@@ -7,21 +7,27 @@ namespace plastica {
 
 namespace {
 
+// At most eight rows (element/plastic_hinge_law.hpp): fixed-capacity storage, no allocation.
+constexpr int max_rows = 8;
+using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, max_rows, max_rows>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max_rows, 1>;
+using RowBlock = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor, max_rows, 3>;
+
 constexpr double tolerance = 1e-12; // in the rows' units (capacity rows are scaled to ≈ 1)
 
 // Multipliers of the rows in `set` with those rows at equality.
 bool solve_active(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial, const std::vector<YieldRow>& rows,
-                  const std::vector<int>& set, Eigen::VectorXd& gamma) {
+                  const std::vector<int>& set, SmallVector& gamma) {
     const int n = static_cast<int>(set.size());
-    Eigen::MatrixXd M(n, n);
-    Eigen::VectorXd rhs(n);
+    SmallMatrix M(n, n);
+    SmallVector rhs(n);
     for (int i = 0; i < n; ++i) {
         const Eigen::Vector3d Ka = K * rows[set[i]].a;
         for (int j = 0; j < n; ++j) M(i, j) = rows[set[j]].a.dot(Ka);
         M(i, i) += rows[set[i]].hardening;
         rhs[i] = rows[set[i]].a.dot(q_trial) - rows[set[i]].limit;
     }
-    Eigen::LDLT<Eigen::MatrixXd> ldlt(M);
+    Eigen::LDLT<SmallMatrix> ldlt(M);
     if (ldlt.info() != Eigen::Success) return false;
     gamma = ldlt.solve(rhs);
     return gamma.allFinite();
@@ -33,7 +39,8 @@ Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vecto
                                       const std::vector<int>& active) {
     if (active.empty()) return K;
     const int n = static_cast<int>(active.size());
-    Eigen::MatrixXd AK(n, 3), M(n, n);
+    RowBlock AK(n, 3);
+    SmallMatrix M(n, n);
     for (int i = 0; i < n; ++i) AK.row(i) = (K * rows[active[i]].a).transpose();
     for (int i = 0; i < n; ++i) {
         for (int j = 0; j < n; ++j) M(i, j) = rows[active[j]].a.dot(AK.row(i));
@@ -49,6 +56,7 @@ ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
     // violation of an inactive row is read from q = q_trial − K Σγ a.
     ReturnMap out;
     const int rows_count = static_cast<int>(rows.size());
+    if (rows_count > max_rows) return out; // beyond the fixed storage: reported as no solution
     std::vector<double> gamma(rows.size(), 0.0);
     std::vector<int> passive;
     auto state = [&](const std::vector<double>& g) {
@@ -74,7 +82,7 @@ ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
     if (frozen) {
         // The given rows at equality, whatever their multipliers; then check.
         passive = working;
-        Eigen::VectorXd z;
+        SmallVector z;
         if (!solve_active(K, q_trial, rows, passive, z)) return out;
         for (std::size_t i = 0; i < passive.size(); ++i) gamma[passive[i]] = z[i];
         const Eigen::Vector3d q = q_trial - K * state(gamma);
@@ -97,7 +105,7 @@ ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
         if (enter < 0) return finish(true);
         passive.push_back(enter);
         for (int inner = 0; inner < rows_count + 4; ++inner) {
-            Eigen::VectorXd z;
+            SmallVector z;
             if (!solve_active(K, q_trial, rows, passive, z)) return out;
             if (z.size() == 0 || z.minCoeff() > 0.0) {
                 for (std::size_t i = 0; i < passive.size(); ++i) gamma[passive[i]] = z[i];
