@@ -570,6 +570,18 @@ private:
         for (const Support& s : model_.supports)
             if (a.scheme == Scheme::displacement_control && s.node == a.control.node && s.fixed[a.control.dof])
                 r.fail("control_dof", "the controlled DOF is supported");
+        for (const PrescribedDisplacement& p : model_.prescribed)
+            if (a.scheme == Scheme::displacement_control && p.node == a.control.node && p.dof == a.control.dof)
+                r.fail("control_dof", "the controlled DOF has a prescribed displacement");
+        // Nothing to solve when every DOF is held.
+        std::vector<bool> held(static_cast<std::size_t>(model_.dof_count()), false);
+        for (const Support& s : model_.supports)
+            for (int d = 0; d < dofs_per_node; ++d)
+                if (s.fixed[d]) held[static_cast<std::size_t>(dofs_per_node * s.node + d)] = true;
+        for (const PrescribedDisplacement& p : model_.prescribed)
+            held[static_cast<std::size_t>(dofs_per_node * p.node + p.dof)] = true;
+        if (std::all_of(held.begin(), held.end(), [](bool h) { return h; }))
+            r.fail("", "every degree of freedom is supported or prescribed: nothing can move (see the [[support]] tables)");
         r.finish({"scheme", "increment", "min_increment", "max_increment", "adaptive", "desired_iterations",
                   "max_iterations", "max_steps", "residual_tolerance", "displacement_tolerance",
                   "target_load_factor", "target_displacement", "control_at", "control_node", "control_dof",

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Plastica needs, and only those that are missing. Extra package
-# names given as arguments are added (`make fuzz` adds clang).
+# names given as arguments are added (`make fuzz` adds clang). It never removes a package:
+# apt-get runs with --no-remove, so a conflict stops the install with an explanation instead.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libeigen3-dev libtomlplusplus-dev libboost-program-options-dev
           libvtk9-dev libosmesa6-dev libglew-dev catch2 libbenchmark-dev ffmpeg "$@")
@@ -13,4 +14,16 @@ echo "Installing missing Debian packages: ${missing[*]}"
 SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 $SUDO apt-get update -q
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+if ! DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-remove --no-install-recommends "${missing[@]}"; then
+  cat >&2 <<'MSG'
+
+install-deps.sh: apt-get would have to remove a package to install Plastica's dependencies, and
+this script never removes one. The usual cause on Debian 12: python3-paraview (ParaView's pvpython
+and pvbatch) conflicts with python3-vtk9, which libvtk9-dev depends on, so the two cannot be
+installed together. Choose one:
+  - keep ParaView's Python and build Plastica in a container or another machine, or
+  - remove python3-paraview yourself (apt-get remove python3-paraview), then run make again.
+The ParaView GUI (package paraview) does not conflict and opens Plastica's PVD files either way.
+MSG
+  exit 1
+fi

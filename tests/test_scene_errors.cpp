@@ -88,6 +88,8 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"bad ultimate strain", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nultimate_strain = 0.0001"), "expected 0 (never fails) or a strain above fy/E", 7},
         {"bilateral foundation with a base", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.0]\n", "a base line belongs to a unilateral foundation", 29},
         {"fibres off the centroid", replaced("A = 1.0\nI = 1.0", "shape = \"fibres\"\nfibres = [[1.0, 0.5], [1.0, 1.5]]"), "measured from the centroid", 10},
+        {"every DOF held", replaced("fix = [\"ux\", \"uy\", \"rz\"]", "fix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [0.5, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [1.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]"), "every degree of freedom is supported or prescribed", 28},
+        {"controlled DOF prescribed", good.substr(0, good.find("[analysis]")) + "[[prescribed]]\nat = [1.0, 0.0]\ndof = \"uy\"\nvalue = -1.0\n[analysis]\nscheme = \"displacement_control\"\nincrement = 0.1\ncontrol_at = [1.0, 0.0]\ncontrol_dof = \"uy\"\ntarget_displacement = 1.0\n", "the controlled DOF has a prescribed displacement", 30},
     };
     CHECK(cases.size() >= 30);
     for (const Case& c : cases) {
