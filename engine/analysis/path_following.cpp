@@ -209,12 +209,12 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
     const double sign = h >= 0.0 ? 1.0 : -1.0;
     double next = std::abs(h);
     if (a.adaptive) {
-        // Grow or shrink toward the desired iteration count; a step whose Newton iterations
-        // converged fast at the end (contraction below 0.1 in the last iteration) counts the
-        // iterations that rate needed from the first residual, so state switches early in
-        // the step do not hold the increment down for the rest of the run.
-        const double factor = std::sqrt(static_cast<double>(a.desired_iterations) /
-                                        std::max(outcome.iterations, 1));
+        // Toward the desired iteration count, as √(desired/iterations); but a step whose last
+        // iteration still contracted the residual tenfold was inside Newton's basin: its extra
+        // iterations went to hinges and contacts settling, not to a step too large, so it is not
+        // shrunk for them (otherwise plastic phases keep the increment small for good).
+        double factor = std::sqrt(static_cast<double>(a.desired_iterations) / std::max(outcome.iterations, 1));
+        if (outcome.contraction <= 0.1) factor = std::max(factor, 1.0);
         next = std::abs(used) * std::clamp(factor, 0.5, 2.0);
         if (std::abs(used) < std::abs(h) && factor >= 1.0) next = std::max(next, std::abs(h)); // a landing step
     } else if (next < std::abs(a.initial_increment)) {

@@ -59,6 +59,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         }
         const double previous_relative = it > 0 ? result.residual : relative;
         result.residual = relative;
+        if (it > 1) result.contraction = relative / std::max(previous_relative, 1e-300);
         if (hook) hook(it, relative);
         if (it > 0) {
             // The correction relative to the increment, with a floor at round-off of the whole

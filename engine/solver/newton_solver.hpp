@@ -65,6 +65,7 @@ struct NewtonResult {
     Eigen::VectorXd increment; // Δx of the increment
     double load_change = 0.0;  // Δλ
     int negative_pivots_seen = 0; // most negative pivots of any tangent factorised
+    double contraction = 1.0;     // last residual over the one before, at acceptance
     bool converged() const { return rule != Acceptance::none; }
 };
 
