@@ -198,7 +198,8 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
     CHECK_THAT(bad.output, Catch::Contains("'ten' is not a number"));
 
     const fs::path table = scratch("stability");
-    const Result stability = plastica("stability -o " + table.string());
+    // The whole sweep is a test of its own (study_tests); here the command on a part of it.
+    const Result stability = plastica("stability --case \"ring on a unilateral base\" -o " + table.string());
     CHECK(stability.code == 0);
     CHECK_THAT(stability.output, Catch::Contains("every case behaved as expected"));
     CHECK(fs::exists(table / "stability.csv"));

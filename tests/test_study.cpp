@@ -2,6 +2,7 @@
 // error, convergence orders, and every stability case against its expected outcome.
 #include "curve_error.hpp"
 #include "scene_variant.hpp"
+#include "robustness_cases.hpp"
 #include "stability_cases.hpp"
 #include "study.hpp"
 #include "study_error.hpp"
@@ -77,8 +78,9 @@ TEST_CASE("A scene without a closed form refuses --reference exact", "[study]") 
     CHECK_THROWS_AS(run_study(o), StudyError);
 }
 
-TEST_CASE("Every stability case ends with its expected outcome and no NaN", "[study][stability]") {
-    for (const StabilityCase& c : stability_cases()) {
+namespace {
+void check_cases(const std::vector<StabilityCase>& cases) {
+    for (const StabilityCase& c : cases) {
         DYNAMIC_SECTION(c.name << ", " << c.parameter) {
             const StabilityRow r = run_stability_case(c);
             INFO(r.outcome << ": " << r.reason << "; steps " << r.steps << ", iterations " << r.iterations);
@@ -86,4 +88,30 @@ TEST_CASE("Every stability case ends with its expected outcome and no NaN", "[st
             CHECK(r.passed);
         }
     }
+}
+
+// The sweep in three parts (each its own CTest entry, so they run side by side).
+std::vector<StabilityCase> part(bool robustness, bool ring) {
+    const std::vector<StabilityCase> all = stability_cases(), matrix = robustness_cases();
+    std::vector<StabilityCase> out;
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        const bool in_matrix = k + matrix.size() >= all.size();
+        if (in_matrix != robustness) continue;
+        if (robustness && (all[k].name == "inelastic ring") != ring) continue;
+        out.push_back(all[k]);
+    }
+    return out;
+}
+} // namespace
+
+TEST_CASE("Every stability case ends with its expected outcome and no NaN", "[study][stability]") {
+    check_cases(part(false, false));
+}
+
+TEST_CASE("Robustness matrix: every variant of the inelastic ring completes to its target", "[study][stability][robustness]") {
+    check_cases(part(true, true));
+}
+
+TEST_CASE("Robustness matrix: frame, arch and beams complete past their peaks", "[study][stability][robustness]") {
+    check_cases(part(true, false));
 }
