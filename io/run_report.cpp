@@ -33,6 +33,12 @@ std::string to_json(const RunReport& r) {
     // stagnation within ten times it (never more).
     j << "  \"accepted_by\": {\"residual\": " << r.summary.accepted_by_residual
       << ", \"stagnation\": " << r.summary.accepted_by_stagnation << "},\n";
+    // Section solves (SCM) that did not converge: the end kept its previous stiffness for that
+    // step. Counted over the run, so a user sees it rather than a silent plastic hinge.
+    int section_failures = 0;
+    for (const ElementResult& e : r.last.elements)
+        for (const HingeReport& h : e.hinge) section_failures += h.section_failures;
+    if (r.model->inelastic()) j << "  \"section_solve_failures\": " << section_failures << ",\n";
     j << "  \"final\": {\"load_factor\": " << r.last.load_factor << ", \"load\": " << r.last.load
       << ", \"control_displacement\": " << r.last.control_displacement << ", \"contact_count\": "
       << r.last.contact_count << ", \"hinge_count\": " << r.last.hinge_count << "},\n";
