@@ -1,6 +1,7 @@
 #include "robustness_cases.hpp"
 
 #include "analysis/path_following.hpp"
+#include "curve_error.hpp"
 #include "embedded_scenes.hpp"
 #include "scene_reader.hpp"
 
@@ -31,12 +32,12 @@ std::string ring(const std::vector<std::pair<std::string, std::string>>& edits) 
 double load_at(const Steps& steps, double displacement) {
     // A run that ends on its target within round-off counts as reaching it.
     if (std::abs(steps.back().control_displacement - displacement) <= 1e-9 * displacement) return steps.back().load;
-    for (std::size_t k = 1; k < steps.size(); ++k) {
-        const double a = steps[k - 1].control_displacement, b = steps[k].control_displacement;
-        if ((a - displacement) * (b - displacement) <= 0.0 && a != b)
-            return steps[k - 1].load + (displacement - a) / (b - a) * (steps[k].load - steps[k - 1].load);
+    Curve curve;
+    for (const StepResult& r : steps) {
+        curve.displacement.push_back(r.control_displacement);
+        curve.load.push_back(r.load);
     }
-    return NAN;
+    return plastica::load_at(curve, displacement);
 }
 
 // P at δ = 100 of the shipped ring, computed once.

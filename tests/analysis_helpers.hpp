@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,16 @@ struct Run {
         return m;
     }
 };
+
+inline Run run_scene(const std::string& toml);
+
+// A scene file of the source tree, by its path relative to the tree.
+inline Run run_scene_file(const std::string& relative) {
+    std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/" + relative);
+    std::stringstream text;
+    text << in.rdbuf();
+    return run_scene(text.str());
+}
 
 inline Run run_scene(const std::string& toml) {
     Run r;

@@ -6,25 +6,13 @@
 
 #include <catch2/catch.hpp>
 
-#include <fstream>
-#include <sstream>
 
 using namespace plastica;
 using namespace plastica::testing;
 
-namespace {
-
-Run run_file(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return run_scene(text.str());
-}
-
-} // namespace
 
 TEST_CASE("A clamped beam turns into a plastic string: P/Pc = 1 + (W/H)², then 2W/H", "[plasticity][catenary]") {
-    const Run r = run_file(std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/catenary_beam.toml");
+    const Run r = run_scene_file("models/gallery/catenary_beam.toml");
     REQUIRE(r.summary.status == RunStatus::completed);
     // models/gallery/catenary_beam.toml: span 2L = 2, H = 0.1, B = 0.05, fy = 2.5e8, E = 2.1e11.
     const double B = 0.05, H = 0.1, L = 1.0, fy = 2.5e8, E = 2.1e11;

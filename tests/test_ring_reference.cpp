@@ -6,7 +6,9 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <sstream>
 
 using namespace plastica;
@@ -16,12 +18,6 @@ namespace {
 
 std::string source(const std::string& relative) { return std::string(PLASTICA_SOURCE_DIR) + "/" + relative; }
 
-Run run_file(const std::string& relative) {
-    std::ifstream in(source(relative));
-    std::stringstream text;
-    text << in.rdbuf();
-    return run_scene(text.str());
-}
 
 double load_at(const std::vector<StepResult>& steps, double d) {
     for (std::size_t k = 1; k < steps.size(); ++k) {
@@ -49,7 +45,7 @@ TEST_CASE("The shipped rings stay within 0.1 % of their stored curves", "[ring][
     }
     REQUIRE(reference.size() == 3);
     for (const auto& [scene, points] : reference) {
-        const Run r = run_file("models/" + scene + ".toml");
+        const Run r = run_scene_file("models/" + scene + ".toml");
         REQUIRE(r.summary.status == RunStatus::completed);
         for (const auto& [d, p] : points) {
             CAPTURE(scene, d);
@@ -62,7 +58,7 @@ TEST_CASE("The shipped rings stay within 0.1 % of their stored curves", "[ring][
 
 TEST_CASE("Hinge states do not flicker: an end leaves the capacity only when its moment falls", "[ring][plasticity]") {
     for (const char* scene : {"models/ring_inelastic.toml", "models/gallery/portal_frame.toml"}) {
-        const Run r = run_file(scene);
+        const Run r = run_scene_file(scene);
         REQUIRE(r.summary.status == RunStatus::completed);
         int reversals = 0, unloadings = 0;
         for (std::size_t k = 1; k < r.steps.size(); ++k)

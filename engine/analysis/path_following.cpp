@@ -144,19 +144,23 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
         if (outcome.rule == Acceptance::residual) ++summary.accepted_by_residual;
         if (outcome.rule == Acceptance::stagnation) ++summary.accepted_by_stagnation;
         if (!outcome.converged()) {
+            const bool giving_up = std::abs(0.5 * step_h) < h_min;
             // Under load control, the tangent where the failed increment ended tells whether
-            // the structure has passed its limit (a plastic mechanism or buckling).
-            const bool beyond_limit = a.scheme == Scheme::load_control && outcome.failure != NewtonFailure::non_finite &&
-                                      (outcome.negative_pivots_seen > 0 || tangent_shows_limit());
-            if (outcome.negative_pivots_seen > 0)
-                limit_evidence_ = "the tangent beyond it has " + std::to_string(outcome.negative_pivots_seen) +
-                                  " negative pivot(s)";
+            // the structure has passed its limit (a plastic mechanism or buckling); it is read
+            // only when the run stops here.
+            bool beyond_limit = false;
+            if (giving_up && a.scheme == Scheme::load_control && outcome.failure != NewtonFailure::non_finite) {
+                if (outcome.negative_pivots_seen > 0)
+                    limit_evidence_ = "the tangent beyond it has " + std::to_string(outcome.negative_pivots_seen) +
+                                      " negative pivot(s)";
+                beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit();
+            }
             u_ = u_saved;
             lambda_ = lambda_saved;
             system_.revert();
             ++summary.cut_steps;
             h = 0.5 * step_h;
-            if (std::abs(h) >= h_min) continue;
+            if (!giving_up) continue;
             summary.status = RunStatus::no_convergence;
             std::ostringstream why;
             system_.evaluate(u_, ubar_, false); // leave the system at the last converged state

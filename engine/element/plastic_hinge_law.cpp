@@ -17,7 +17,7 @@ constexpr double no_limit = std::numeric_limits<double>::infinity();
 PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, std::array<bool, 2> capacity_at)
     : EA_(section.E * section.area), EI_(section.E * section.inertia), L0_(L0),
       sections_{FibreSection(section), FibreSection(section)},
-      k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)),
+      k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)), f_elastic_(k_elastic_.inverse()),
       moment_scale_(sections_[0].moment_capacity(0.0, 1.0)), capacity_at_(capacity_at) {
     rows_.assign(row_count, YieldRow{});
     for (YieldRow& r : rows_) r.limit = no_limit;
@@ -90,23 +90,28 @@ bool PlasticHingeLaw::outside_capacity(const Eigen::Vector3d& q) const {
 Eigen::Matrix3d PlasticHingeLaw::curved_tangent(const ReturnMap& r) const {
     if (curvature_t_ <= 0.0) return r.tangent;
     // The capacity normal turns with N: K̃ = (K⁻¹ + Σγ ∂a/∂q)⁻¹ replaces K.
-    Eigen::Matrix3d flexibility = k_elastic_.inverse();
+    Eigen::Matrix3d flexibility = f_elastic_;
     flexibility(0, 0) += curvature_t_;
     return elastoplastic_tangent(flexibility.inverse(), rows_, r.active);
+}
+
+void PlasticHingeLaw::set_without_flow(const Eigen::Vector3d& e, const Eigen::Vector3d& q_now,
+                                       const Eigen::Matrix3d& k_now, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
+    consistent_ = true;
+    active_t_.clear();
+    gamma_t_.clear();
+    flow_t_.setZero();
+    q = q_now;
+    k = k_now;
+    e_t_ = e;
+    q_t_ = q;
 }
 
 void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     if (e == e_c_ && !loading_c_.empty()) {
         // At the committed state the response is one-sided: give the tangent of continued
         // loading (the rows that carried the last step's flow), the predictor of the next step.
-        consistent_ = true;
-        active_t_.clear();
-        gamma_t_.clear();
-        flow_t_.setZero();
-        q = q_c_;
-        k = elastoplastic_tangent(k_elastic_, rows_, loading_c_);
-        e_t_ = e;
-        q_t_ = q;
+        set_without_flow(e, q_c_, elastoplastic_tangent(k_elastic_, rows_, loading_c_), q, k);
         return;
     }
     const Eigen::Vector3d q_trial = q_c_ + k_elastic_ * (e - e_c_);
@@ -114,14 +119,7 @@ void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen:
     curvature_t_ = 0.0;
     if (!springs && active_c_.empty() && !(frozen_ && !active_t_.empty()) && !outside_capacity(q_trial)) {
         // Elastic: no yielded end, inside the capacity surface.
-        consistent_ = true;
-        active_t_.clear();
-        gamma_t_.clear();
-        flow_t_.setZero();
-        q = q_trial;
-        k = k_elastic_;
-        e_t_ = e;
-        q_t_ = q;
+        set_without_flow(e, q_trial, k_elastic_, q, k);
         return;
     }
     for (Row r : {tension, compression}) rows_[r].limit = 1.0 + hardened_[r];
@@ -203,18 +201,18 @@ void PlasticHingeLaw::commit() {
         report.failed_fibres = section.failed_fibres();
         if (report.failed_fibres > 0) report.state = HingeState::failed;
     }
-    // Hardening memory of the capacity rows: a row that flowed keeps the limit it reached, so
-    // the next step starts on the surface instead of being pulled back onto it.
+    // The rows that flowed: capacity rows keep the limit their hardening reached (the next step
+    // starts on the surface instead of being pulled back onto it), and all of them give the
+    // next predictor's tangent.
+    loading_c_.clear();
     for (std::size_t i = 0; i < active_t_.size() && i < gamma_t_.size(); ++i) {
         const int r = active_t_[i];
-        if (r >= capacity_i && gamma_t_[i] > 0.0) hardened_[r] += rows_[r].hardening * gamma_t_[i];
+        if (gamma_t_[i] <= 0.0) continue;
+        if (r >= capacity_i) hardened_[r] += rows_[r].hardening * gamma_t_[i];
+        loading_c_.push_back(r);
     }
     e_c_ = e_t_;
     q_c_ = q_t_;
-    plastic_c_ += flow_t_;
-    loading_c_.clear();
-    for (std::size_t i = 0; i < active_t_.size() && i < gamma_t_.size(); ++i)
-        if (gamma_t_[i] > 0.0) loading_c_.push_back(active_t_[i]);
     // Only capacity rows carry over as a warm start; the loading surfaces move with the state.
     active_c_.clear();
     for (int r : active_t_)
@@ -240,7 +238,7 @@ void PlasticHingeLaw::revert() {
 
 Eigen::Vector3d PlasticHingeLaw::plastic_deformation() const {
     // What the elastic beam cannot account for: e − k_el⁻¹ q.
-    return e_c_ - k_elastic_.inverse() * q_c_;
+    return e_c_ - f_elastic_ * q_c_;
 }
 
 } // namespace plastica

@@ -63,10 +63,14 @@ private:
     bool outside_capacity(const Eigen::Vector3d& q) const;
     double capacity_margin(const Eigen::Vector3d& q, int end) const; // M_p(N)+offset − |m|, ≥ 0 inside
     Eigen::Matrix3d curved_tangent(const ReturnMap& r) const;
+    // A trial state without plastic flow: q_now with tangent k_now.
+    void set_without_flow(const Eigen::Vector3d& e, const Eigen::Vector3d& q_now, const Eigen::Matrix3d& k_now,
+                          Eigen::Vector3d& q, Eigen::Matrix3d& k);
 
     double EA_, EI_, L0_;
     std::array<FibreSection, 2> sections_;
     Eigen::Matrix3d k_elastic_;
+    Eigen::Matrix3d f_elastic_; // its inverse, the elastic flexibility
     double moment_scale_;          // plastic moment at N = 0
     // Rows: 0, 1 pseudo-springs of ends i, j; 2, 3 their capacity in positive bending, 4, 5
     // in negative bending; 6, 7 tension and compression squash loads.
@@ -82,7 +86,6 @@ private:
     // Committed state.
     Eigen::Vector3d e_c_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d q_c_ = Eigen::Vector3d::Zero();
-    Eigen::Vector3d plastic_c_ = Eigen::Vector3d::Zero(); // accumulated flow
     std::array<double, 2> eta_c_{1.0, 1.0};              // pseudo-spring η for the next step
     std::vector<int> active_c_;
     std::vector<int> loading_c_; // rows that flowed in the last step: the predictor's tangent

@@ -33,7 +33,6 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
                              const IterationHook& hook) {
     NewtonResult result;
     double last_correction = 0.0;
-    double predictor_norm = 0.0;
     double damping = 1.0;
     std::vector<double> history; // residual norms of the iterations so far
     bool release = false; // re-decide frozen active sets at the next evaluation
@@ -109,15 +108,6 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         }
         Eigen::VectorXd du = du_r + dl * du_f;
         double step_dl = dl;
-        // A correction far larger than the increment itself comes from a nearly singular
-        // tangent (a hinge assumed flowing that will unload): keep it to the increment's size.
-        if (it == 0) predictor_norm = du.norm();
-        const double cap = settings.correction_cap * std::max(predictor_norm, result.increment.norm());
-        if (it > 0 && du.norm() > cap && cap > 0.0) {
-            const double scale = cap / du.norm();
-            du *= scale;
-            step_dl *= scale;
-        }
         if (!du.allFinite()) {
             result.failure = NewtonFailure::non_finite;
             return result;

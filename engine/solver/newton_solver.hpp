@@ -53,8 +53,6 @@ struct NewtonSettings {
     double reference_level = 0.0;         // |λ| the residual is measured against (0: this increment's)
     // Stagnation at round-off is accepted only within this multiple of the tolerance.
     double stagnation_factor = 10.0;
-    // Largest corrector, relative to the larger of the predictor and the increment so far.
-    double correction_cap = 1e300;
 };
 
 struct NewtonResult {
