@@ -10,7 +10,7 @@ namespace plastica::cli {
 void add_render_options(po::options_description& options) {
     options.add_options()
         ("size", po::value<std::string>()->default_value("1280x720"), "picture size WIDTHxHEIGHT in pixels")
-        ("field", po::value<std::string>()->default_value("bending_moment"), "point or cell array that colours the structure")
+        ("field", po::value<std::string>()->default_value(""), "point or cell array that colours the structure (default: yielded_share with distributed plasticity, else bending_moment)")
         ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
         ("hide", po::value<std::string>(), "leave out layers: initial,hinges,contact")

@@ -219,15 +219,26 @@ private:
                 s.inertia = I;
                 if (!(I > 0.0)) r.fail("fibres", "the fibres give no bending stiffness");
             }
-            const bool plastic = r.boolean_or("plastic", m->second.steel.has_value());
-            if (plastic && !m->second.steel)
-                r.fail("plastic", "an inelastic section needs a material with 'fy'");
-            if (plastic) s.steel = m->second.steel;
+            if (r.has("plastic"))
+                r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
+            const std::string plasticity =
+                r.choice("plasticity", {"none", "hinges", "distributed"}, m->second.steel ? "hinges" : "none");
+            if (plasticity != "none" && !m->second.steel)
+                r.fail("plasticity", "an inelastic section needs a material with 'fy'");
+            if (plasticity == "distributed") {
+                s.plasticity = Plasticity::distributed;
+                s.integration_points = r.integer_or("integration_points", default_integration_points, 1, 10);
+            } else {
+                if (r.has("integration_points"))
+                    r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
+                s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
+            }
+            if (s.plasticity != Plasticity::none) s.steel = m->second.steel;
             else s.fibres.clear();
             s.name = name;
             r.finish({"name", "material", "shape", "A", "I", "b", "h", "fibres", "depth", "flange_width",
                       "flange_thickness", "web_thickness", "flange_strips", "flange_layers", "web_fibres",
-                      "residual_stress", "diameter", "thickness", "plastic"});
+                      "residual_stress", "diameter", "thickness", "plasticity", "integration_points"});
             section_index_[name] = static_cast<int>(model_.sections.size());
             model_.sections.push_back(s);
         }

@@ -84,7 +84,7 @@ std::vector<std::string> VtuSeriesWriter::point_arrays(const Model& m) {
         names.push_back("gap");
         names.push_back("contact");
     }
-    if (m.inelastic()) {
+    if (m.has_plasticity(Plasticity::hinges)) {
         names.push_back("plastic_utilisation");
         names.push_back("hinge_state");
     }
@@ -93,7 +93,13 @@ std::vector<std::string> VtuSeriesWriter::point_arrays(const Model& m) {
 
 std::vector<std::string> VtuSeriesWriter::cell_arrays(const Model& m) {
     std::vector<std::string> names{"axial_force", "moment_i", "moment_j", "shear"};
-    if (m.inelastic()) {
+    if (m.has_plasticity(Plasticity::distributed)) {
+        names.push_back("yielded_share");
+        names.push_back("section_yielded_share");
+        names.push_back("section_curvature");
+        names.push_back("section_moment");
+    }
+    if (m.has_plasticity(Plasticity::hinges)) {
         names.push_back("ei_ratio");
         names.push_back("utilisation_i");
         names.push_back("utilisation_j");
@@ -219,7 +225,32 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
         pd->AddArray(gap);
         pd->AddArray(state);
     }
-    if (m.inelastic()) {
+    if (m.has_plasticity(Plasticity::distributed)) {
+        // One tuple per element, one component per integration point (ξ order); elements
+        // without fibre sections along them carry zeros.
+        const int points = m.integration_points();
+        auto most = make_array("yielded_share", 1, ne);
+        auto share = make_array("section_yielded_share", points, ne);
+        auto curvature = make_array("section_curvature", points, ne);
+        auto moment_at = make_array("section_moment", points, ne);
+        for (vtkIdType e = 0; e < ne; ++e) {
+            const std::vector<SectionReport>& sections = r.elements[e].sections;
+            double largest = 0.0;
+            for (int k = 0; k < points; ++k) {
+                const bool has = k < static_cast<int>(sections.size());
+                share->SetComponent(e, k, has ? sections[k].yielded_share : 0.0);
+                curvature->SetComponent(e, k, has ? sections[k].curvature : 0.0);
+                moment_at->SetComponent(e, k, has ? sections[k].moment : 0.0);
+                if (has) largest = std::max(largest, sections[k].yielded_share);
+            }
+            most->SetValue(e, largest);
+        }
+        cd->AddArray(most);
+        cd->AddArray(share);
+        cd->AddArray(curvature);
+        cd->AddArray(moment_at);
+    }
+    if (m.has_plasticity(Plasticity::hinges)) {
         auto util = make_array("plastic_utilisation", 1, n);
         vtkNew<vtkIntArray> hinge;
         hinge->SetName("hinge_state");

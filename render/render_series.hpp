@@ -12,7 +12,7 @@ namespace plastica::render {
 struct RenderOptions {
     std::string output;                   // folder for the pictures (default: the series folder)
     int width = 1280, height = 720;
-    std::string field = "bending_moment"; // point or cell array colouring the structure
+    std::string field; // point or cell array colouring the structure; empty: yielded_share or bending_moment
     int every = 1;                        // draw every k-th step (the first and last always)
     std::vector<int> steps;               // draw exactly these step numbers instead (snapshots)
     std::vector<std::string> hide;        // layers left out: initial, hinges, contact

@@ -41,8 +41,9 @@ double tuple_magnitude(vtkDataArray* array, long long i) {
     return std::sqrt(sum);
 }
 
-SeriesSummary summarise(const ResultSeries& series, const std::string& field) {
+SeriesSummary summarise(const ResultSeries& series, const std::string& requested) {
     SeriesSummary s;
+    std::string field = requested;
     const double inf = std::numeric_limits<double>::infinity();
     double b[4] = {inf, -inf, inf, -inf};
     double range[2] = {inf, -inf};
@@ -60,6 +61,10 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& field) {
                 s.mirrored = true;
                 s.mirror_x = field_value(grid, "mirror_x");
             }
+            // Unless asked otherwise: the spread of plasticity where the members have fibre
+            // sections along them, else the bending moment.
+            if (field.empty())
+                field = grid->GetCellData()->GetArray("yielded_share") ? "yielded_share" : "bending_moment";
             s.field.name = field;
             vtkDataArray* a = grid->GetPointData()->GetArray(field.c_str());
             if (!a) {

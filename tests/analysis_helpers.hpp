@@ -34,13 +34,15 @@ struct Run {
 
 inline Run run_scene(const std::string& toml);
 
-// A scene file of the source tree, by its path relative to the tree.
-inline Run run_scene_file(const std::string& relative) {
+// The text of a scene file of the source tree, by its path relative to the tree.
+inline std::string scene_file_text(const std::string& relative) {
     std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/" + relative);
     std::stringstream text;
     text << in.rdbuf();
-    return run_scene(text.str());
+    return text.str();
 }
+
+inline Run run_scene_file(const std::string& relative) { return run_scene(scene_file_text(relative)); }
 
 inline Run run_scene(const std::string& toml) {
     Run r;

@@ -1,6 +1,7 @@
 // Refined plastic hinges against plastic theory (BENCHMARKS.md §2.2): collapse loads of
 // beams and a portal frame, elastic unloading, and the inelastic ring of the seed.
 #include "analysis_helpers.hpp"
+#include "plastic_beam_scenes.hpp"
 #include "element/plastic_hinge_law.hpp"
 
 #include <catch2/catch.hpp>
@@ -9,29 +10,10 @@ using namespace plastica;
 using namespace plastica::testing;
 
 namespace {
-// fy/E = 1.25e-6: displacements at collapse are tiny, so first-order plastic theory holds.
-// Rectangle 10 × 20 with an even number of fibres: Mp = fy·b·h²/4 = 250 000 exactly.
-constexpr double Mp = 250.0 * 10.0 * 20.0 * 20.0 / 4.0;
-const std::string header = R"(
-[scene]
-name = "plastic"
-[[material]]
-name = "steel"
-E = 2.0e8
-fy = 250.0
-[[section]]
-name = "s"
-material = "steel"
-shape = "rectangle"
-b = 10.0
-h = 20.0
-fibres = 10
-)";
+constexpr double Mp = rectangle_Mp;
+const std::string header = plastic_beam_header("hinges");
 std::string control(double x, double y, const std::string& dof, double increment, double target) {
-    return "[analysis]\nscheme = \"displacement_control\"\nincrement = " + num(increment) +
-           "\nadaptive = false\ncontrol_at = [" + num(x) + ", " + num(y) + "]\ncontrol_dof = \"" + dof +
-           "\"\ncontrol_sign = " + (dof == "uy" ? "-1.0" : "1.0") + "\ntarget_displacement = " + num(target) +
-           "\nmax_steps = 2000\n";
+    return displacement_control(x, y, dof, increment, target);
 }
 } // namespace
 

@@ -48,7 +48,7 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control) {
     const AnalysisSpec& a = model_.analysis;
     StructureProblem problem(system_, u_, lambda_, force_, ubar_, control.freeze_active_after,
-                             control.freeze_hinges_after);
+                             control.freeze_hinges_after, control.freeze_fibres_after);
     NewtonSettings settings;
     settings.max_iterations = a.max_iterations;
     settings.residual_tolerance = a.residual_tolerance;

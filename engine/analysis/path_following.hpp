@@ -29,6 +29,10 @@ struct RunControl {
     // predictor and first correction, then kept until equilibrium, re-checked there and
     // re-decided if the state contradicts them (no cycling of a kink inside Newton).
     int freeze_hinges_after = 1000;
+    // Fibre branches of distributed plasticity (elastic or yielding) are kept from this
+    // iteration on, re-checked at equilibrium and re-decided where contradicted: without it
+    // fibres flip between yielding and unloading from one iteration to the next.
+    int freeze_fibres_after = 3;
 };
 
 // Per-iteration record for solver diagnostics (quadratic convergence checks).

@@ -16,6 +16,7 @@ struct ElementResult {
     BeamForces forces;
     bool hinged = false;
     std::array<HingeReport, 2> hinge{};
+    std::vector<SectionReport> sections; // distributed plasticity: its integration points
 };
 
 struct SpringResult {

@@ -1,5 +1,6 @@
 #include "analysis/structural_system.hpp"
 
+#include "element/distributed_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
 
 #include <cmath>
@@ -40,7 +41,11 @@ std::vector<std::vector<int>> assembly_blocks(const Model& model, const std::vec
 }
 
 std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, std::array<bool, 2> capacity_at) {
-    if (s.steel) return std::make_unique<PlasticHingeLaw>(s, L0, capacity_at);
+    switch (s.plasticity) {
+    case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, capacity_at);
+    case Plasticity::distributed: return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
+    case Plasticity::none: break;
+    }
     return std::make_unique<ElasticLaw>(s.E * s.area, s.E * s.inertia, L0);
 }
 
@@ -62,10 +67,11 @@ StructuralSystem::StructuralSystem(const Model& model)
         std::array<bool, 2> capacity_at{true, true};
         const int ends[2] = {e.node_i, e.node_j};
         for (int end = 0; end < 2; ++end) {
-            if (members[ends[end]] != 2 || !model.sections[e.section].steel) continue;
+            if (members[ends[end]] != 2 || model.sections[e.section].plasticity != Plasticity::hinges) continue;
             capacity_at[end] = !hinge_taken[ends[end]];
             hinge_taken[ends[end]] = true;
         }
+        distributed_.push_back(model.sections[e.section].plasticity == Plasticity::distributed);
         elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), capacity_at));
     }
     internal_ = Eigen::VectorXd::Zero(dof_count());
@@ -73,7 +79,7 @@ StructuralSystem::StructuralSystem(const Model& model)
 }
 
 bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar,
-                                bool freeze_active, bool freeze_hinges) {
+                                bool freeze_active, bool freeze_hinges, bool freeze_fibres) {
     internal_.setZero();
     coupling_.setZero();
     assembler_.set_zero();
@@ -87,7 +93,7 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
             dofs[3 + a] = dofs_per_node * spec.node_j + a;
         }
         for (int a = 0; a < 6; ++a) d[a] = u[dofs[a]];
-        elements_[e].freeze_states(freeze_hinges);
+        elements_[e].freeze_states(distributed_[e] ? freeze_fibres : freeze_hinges);
         elements_[e].compute(d, f, &k);
         if (!f.allFinite() || !k.allFinite()) {
             non_finite_where_ = "element " + std::to_string(e + 1) + " (nodes " +
@@ -160,6 +166,7 @@ void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& e
         ElementResult& r = out.elements[e];
         r.forces = elements_[e].forces();
         r.hinged = elements_[e].law().has_hinges();
+        r.sections = elements_[e].law().sections();
         for (int end = 0; end < 2 && r.hinged; ++end) {
             r.hinge[end] = elements_[e].law().hinge(end);
             if (r.hinge[end].state != HingeState::elastic) ++out.hinge_count;

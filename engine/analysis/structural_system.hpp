@@ -27,7 +27,7 @@ public:
     // Evaluates at the full displacement vector u; ubar is the prescribed-displacement
     // direction. Returns false (and names the element) when a force is not finite.
     bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, bool freeze_active,
-                  bool freeze_hinges = false);
+                  bool freeze_hinges = false, bool freeze_fibres = false);
 
     const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū, free DOFs
@@ -52,6 +52,7 @@ private:
     std::vector<ElementSpec> element_specs_;
     std::vector<Node> nodes_;
     std::vector<CorotationalBeam> elements_;
+    std::vector<bool> distributed_; // per element: fibre sections along it (else hinges or elastic)
     Foundation foundation_;
     int free_count_ = 0;
     std::vector<int> equation_;

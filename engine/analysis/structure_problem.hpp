@@ -11,10 +11,11 @@ class StructureProblem final : public NewtonProblem {
 public:
     // u (full DOF vector) and lambda are the state, moved in place; force and ubar are the
     // reference loads and prescribed displacements (full).
-    // Contact sets are frozen from iteration `contact_freeze`, hinge states from `hinge_freeze`.
+    // Contact sets are frozen from iteration `contact_freeze`, hinge states from `hinge_freeze`,
+    // fibre branches of distributed plasticity from `fibre_freeze`.
     StructureProblem(StructuralSystem& system, Eigen::VectorXd& u, double& lambda,
                      const Eigen::VectorXd& force, const Eigen::VectorXd& ubar,
-                     int contact_freeze, int hinge_freeze);
+                     int contact_freeze, int hinge_freeze, int fibre_freeze);
 
     bool evaluate(int iteration, bool release) override;
     const Eigen::VectorXd& residual() const override { return residual_; }
@@ -35,7 +36,7 @@ private:
     Eigen::VectorXd residual_;
     Eigen::VectorXd load_direction_;
     std::vector<int> prescribed_; // full DOF indices with ū ≠ 0
-    int contact_freeze_, hinge_freeze_;
+    int contact_freeze_, hinge_freeze_, fibre_freeze_;
 };
 
 } // namespace plastica

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <memory>
+#include <vector>
 
 namespace plastica {
 
@@ -21,6 +22,15 @@ struct HingeReport {
     int section_failures = 0; // section solves that did not converge (stiffness kept)
 };
 
+// The state of one section along a member with distributed plasticity.
+struct SectionReport {
+    double xi = 0.0;            // position along the member, 0 … 1
+    double yielded_share = 0.0; // share of the section's area yielded (or failed)
+    double curvature = 0.0;     // κ = dθ/ds
+    double moment = 0.0;        // sagging moment, as the element's end moments
+    double axial_force = 0.0;
+};
+
 class BasicLaw {
 public:
     virtual ~BasicLaw() = default;
@@ -30,6 +40,8 @@ public:
     virtual void revert() = 0;
     virtual bool has_hinges() const { return false; }
     virtual HingeReport hinge(int /*end*/) const { return {}; }
+    // Sections along the member (committed state); empty for a law without them.
+    virtual std::vector<SectionReport> sections() const { return {}; }
     // Committed plastic part of the basic deformations (zero for an elastic law).
     virtual Eigen::Vector3d plastic_deformation() const { return Eigen::Vector3d::Zero(); }
     // Hinge states (loading/unloading, active capacity sides) settle inside Newton like a

@@ -32,14 +32,45 @@ void BilinearSteel::set_trial_strain(double strain) {
     if (std::abs(elastic_stress) <= fy_) {
         s.stress = elastic_stress;
         s.tangent = E_;
+        s.branch = 0;
     } else {
         // Return mapping of perfect plasticity: the excess strain becomes plastic.
         const double sign = elastic_stress > 0.0 ? 1.0 : -1.0;
         s.stress = sign * fy_;
         s.plastic_strain = total - s.stress / E_;
         s.tangent = 0.0;
+        s.branch = static_cast<int>(sign);
     }
     trial_ = s;
+}
+
+void BilinearSteel::set_trial_strain_on_branch(double strain) {
+    const int branch = trial_.branch;
+    if (committed_.failed) {
+        set_trial_strain(strain);
+        return;
+    }
+    State s = committed_;
+    s.strain = strain;
+    s.branch = branch;
+    const double total = strain + eps_residual_;
+    if (branch == 0) {
+        s.stress = E_ * (total - s.plastic_strain);
+        s.tangent = E_;
+    } else {
+        s.stress = branch * fy_;
+        s.plastic_strain = total - s.stress / E_;
+        s.tangent = 0.0;
+    }
+    trial_ = s;
+}
+
+bool BilinearSteel::branch_consistent() const {
+    // Relative slack of 1e-9 of the yield strain: round-off of an equilibrium state.
+    const double slack = 1e-9 * fy_ / E_;
+    if (trial_.failed) return true;
+    if (trial_.branch == 0) return std::abs(trial_.stress) <= fy_ * (1.0 + 1e-9);
+    return trial_.branch * (trial_.plastic_strain - committed_.plastic_strain) >= -slack;
 }
 
 } // namespace plastica

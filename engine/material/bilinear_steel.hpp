@@ -14,6 +14,12 @@ public:
 
     // Sets the trial total strain (mechanical strain measured from the unstressed state).
     void set_trial_strain(double strain);
+    // The same, kept on the branch (elastic, yielding in tension or in compression) of the
+    // previous trial: the law is then linear, as a frozen active set inside Newton.
+    void set_trial_strain_on_branch(double strain);
+    // Whether the trial state satisfies the law it was kept to: an elastic stress within ±fy,
+    // a plastic strain that grows in the direction of yielding.
+    bool branch_consistent() const;
     double stress() const { return trial_.stress; }
     double tangent() const { return trial_.tangent; }
     bool failed() const { return trial_.failed; }
@@ -30,6 +36,7 @@ private:
         double plastic_strain = 0.0;
         double stress = 0.0;
         double tangent = 0.0;
+        int branch = 0; // 0 elastic, +1 yielding in tension, −1 in compression
         bool failed = false;
     };
     double E_ = 0.0;

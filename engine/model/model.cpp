@@ -1,5 +1,6 @@
 #include "model/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace plastica {
@@ -8,6 +9,20 @@ bool Model::inelastic() const {
     for (const auto& s : sections)
         if (s.steel) return true;
     return false;
+}
+
+bool Model::has_plasticity(Plasticity kind) const {
+    for (const ElementSpec& e : elements)
+        if (sections[e.section].plasticity == kind) return true;
+    return false;
+}
+
+int Model::integration_points() const {
+    int most = 0;
+    for (const ElementSpec& e : elements)
+        if (sections[e.section].plasticity == Plasticity::distributed)
+            most = std::max(most, sections[e.section].integration_points);
+    return most;
 }
 
 bool Model::has_unilateral_base() const {

@@ -29,6 +29,16 @@ struct Fibre {
     double residual_stress = 0.0;   // initial stress (ECCS patterns and the like)
 };
 
+// How an inelastic section's plasticity is modelled along a member.
+enum class Plasticity {
+    none,        // elastic
+    hinges,      // refined plastic hinges at element ends (concentrated plasticity)
+    distributed, // fibre sections at integration points along the member (plastic zone)
+};
+
+// Gauss–Legendre points per element of a distributed-plasticity member unless the scene says.
+inline constexpr int default_integration_points = 3;
+
 // A section carries elastic properties for the beam interior and, when the scene is
 // inelastic, a fibre discretisation used by the plastic hinges (Strain Compatibility Method).
 struct SectionSpec {
@@ -38,6 +48,8 @@ struct SectionSpec {
     double inertia = 0.0;
     std::optional<SteelSpec> steel; // present: inelastic section with fibres
     std::vector<Fibre> fibres;      // filled when steel is present
+    Plasticity plasticity = Plasticity::none; // hinges or distributed when steel is present
+    int integration_points = 0;     // distributed: Gauss–Legendre points per element
 };
 
 struct ElementSpec {
@@ -130,6 +142,8 @@ struct Model {
 
     int dof_count() const { return dofs_per_node * static_cast<int>(nodes.size()); }
     bool inelastic() const;
+    bool has_plasticity(Plasticity kind) const; // some element's section models it this way
+    int integration_points() const;             // most points of a distributed-plasticity element
     bool has_unilateral_base() const;
     double reference_load_norm() const;
 };

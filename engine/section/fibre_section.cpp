@@ -54,12 +54,29 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
 }
 
 SectionResponse FibreSection::set_trial_deformation(double eps0, double curvature) {
+    return set_trial<false>(eps0, curvature);
+}
+
+SectionResponse FibreSection::set_trial_deformation_on_branches(double eps0, double curvature) {
+    return set_trial<true>(eps0, curvature);
+}
+
+bool FibreSection::branches_consistent() const {
+    return std::all_of(fibres_.begin(), fibres_.end(),
+                       [](const FibrePoint& f) { return f.material.branch_consistent(); });
+}
+
+template <bool on_branches>
+SectionResponse FibreSection::set_trial(double eps0, double curvature) {
     eps0_t_ = eps0;
     phi_t_ = curvature;
     SectionResponse r;
     double k11 = 0.0, k12 = 0.0, k22 = 0.0;
     for (FibrePoint& f : fibres_) {
-        f.material.set_trial_strain(eps0 - f.y * curvature);
+        if constexpr (on_branches)
+            f.material.set_trial_strain_on_branch(eps0 - f.y * curvature);
+        else
+            f.material.set_trial_strain(eps0 - f.y * curvature);
         const double s = f.material.stress() * f.area;
         const double t = f.material.tangent() * f.area;
         r.N += s;
@@ -253,6 +270,15 @@ int FibreSection::failed_fibres() const {
 int FibreSection::yielded_fibres() const {
     return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
                                           [](const FibrePoint& f) { return f.material.yielding(); }));
+}
+
+double FibreSection::yielded_area_share() const {
+    double yielded = 0.0, total = 0.0;
+    for (const FibrePoint& f : fibres_) {
+        total += f.area;
+        if (f.material.yielding() || f.material.failed()) yielded += f.area;
+    }
+    return total > 0.0 ? yielded / total : 0.0;
 }
 
 } // namespace plastica

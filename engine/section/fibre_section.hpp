@@ -45,6 +45,10 @@ public:
 
     // Trial state of every fibre from the section deformation; returns resultants and tangent.
     SectionResponse set_trial_deformation(double eps0, double curvature);
+    // The same with every fibre kept on its previous branch (BilinearSteel), and whether the
+    // fibres are consistent with the branches they were kept to.
+    SectionResponse set_trial_deformation_on_branches(double eps0, double curvature);
+    bool branches_consistent() const;
     // SCM: the deformation that carries (N, M), starting from the committed deformation.
     ScmResult solve_for_forces(double N, double M, int max_iterations = 100);
 
@@ -71,11 +75,14 @@ public:
 
     int failed_fibres() const;
     int yielded_fibres() const;
+    double yielded_area_share() const; // area at the yield stress (or failed) over the whole
     std::size_t fibre_count() const { return fibres_.size(); }
     double committed_eps0() const { return eps0_c_; }
     double committed_curvature() const { return phi_c_; }
 
 private:
+    template <bool on_branches>
+    SectionResponse set_trial(double eps0, double curvature);
     struct FibrePoint {
         double area;
         double y;
