@@ -558,7 +558,9 @@ private:
         a.min_increment = r.positive_or("min_increment", a.initial_increment * 1e-6);
         a.max_increment = r.positive_or("max_increment", 0.0 + a.initial_increment * 10.0);
         a.adaptive = r.boolean_or("adaptive", a.scheme != Scheme::load_control);
-        a.desired_iterations = r.integer_or("desired_iterations", 5, 1, 100);
+        // Fibre branches along a member settle in about three extra iterations at any step
+        // size (Newton freezes them from its third iteration): a plastic zone asks for more.
+        a.desired_iterations = r.integer_or("desired_iterations", model_.has_plasticity(Plasticity::distributed) ? 8 : 5, 1, 100);
         a.max_iterations = r.integer_or("max_iterations", 30, 1, 1000);
         a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
         a.residual_tolerance = r.positive_or("residual_tolerance", 1e-6);

@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace plastica {
@@ -24,9 +25,27 @@ int set_in_tables(toml::table& root, const char* array, const char* key, double 
     return changed;
 }
 
+// Sets `plasticity` on every section whose material has a yield stress; returns how many.
+int set_plasticity(toml::table& root, const std::string& plasticity) {
+    std::set<std::string> inelastic;
+    if (toml::array* materials = root["material"].as_array())
+        for (toml::node& m : *materials)
+            if (toml::table* t = m.as_table(); t && t->contains("fy"))
+                inelastic.insert((*t)["name"].value_or(std::string()));
+    int changed = 0;
+    if (toml::array* sections = root["section"].as_array())
+        for (toml::node& item : *sections)
+            if (toml::table* t = item.as_table(); t && inelastic.count((*t)["material"].value_or(std::string()))) {
+                t->insert_or_assign("plasticity", plasticity);
+                if (plasticity != "distributed") t->erase("integration_points");
+                ++changed;
+            }
+    return changed;
+}
+
 } // namespace
 
-Model scene_variant(const std::string& file, const std::string& parameter, double value) {
+Model scene_variant(const std::string& file, const std::string& parameter, double value, const std::string& plasticity) {
     toml::table root;
     try {
         root = toml::parse_file(file);
@@ -51,9 +70,12 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
         throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres and increment");
     }
     if (changed == 0) throw StudyError(file + ": no '" + parameter + "' to vary in this scene");
+    if (!plasticity.empty() && set_plasticity(root, plasticity) == 0)
+        throw StudyError(file + ": no inelastic section whose plasticity could be varied");
     std::ostringstream text;
     text << root;
-    return read_scene_text(text.str(), file + " (" + parameter + " = " + std::to_string(value) + ")");
+    return read_scene_text(text.str(), file + " (" + parameter + " = " + std::to_string(value) +
+                                           (plasticity.empty() ? "" : ", plasticity = " + plasticity) + ")");
 }
 
 } // namespace plastica

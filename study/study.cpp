@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 namespace plastica {
 
@@ -94,41 +95,57 @@ StudyReport run_study(const StudyOptions& options) {
     } else {
         report.reference = "finest level of each parameter";
     }
+    // Without a method comparison, one pass with the scene's own plasticity.
+    const std::vector<std::string> methods = options.methods.empty() ? std::vector<std::string>{""} : options.methods;
     for (const Ladder& ladder : options.ladders) {
         if (ladder.levels.size() < 2) throw StudyError("--vary " + ladder.parameter + " needs at least two levels");
-        std::vector<Solved> runs;
-        for (double level : ladder.levels) runs.push_back(solve(scene_variant(options.scene, ladder.parameter, level), options.min_seconds));
-        // The finest: most elements or fibres, smallest increment.
+        std::vector<std::vector<Solved>> runs; // [method][level]
+        for (const std::string& method : methods) {
+            runs.emplace_back();
+            for (double level : ladder.levels)
+                runs.back().push_back(solve(scene_variant(options.scene, ladder.parameter, level, method), options.min_seconds));
+        }
+        // The finest: most elements or fibres, smallest increment, of the last method.
         std::size_t finest = 0;
         for (std::size_t i = 1; i < ladder.levels.size(); ++i)
             if (step_size(ladder.parameter, ladder.levels[i]) < step_size(ladder.parameter, ladder.levels[finest])) finest = i;
-        const Curve& reference = fixed_reference ? *fixed_reference : runs[finest].curve;
+        const Curve& reference = fixed_reference ? *fixed_reference : runs.back()[finest].curve;
+        if (!fixed_reference && !options.methods.empty()) {
+            // Named: the run every method is measured against.
+            std::ostringstream name;
+            name << methods.back() << " plasticity with " << ladder.parameter << " = " << ladder.levels[finest];
+            report.reference = &ladder == &options.ladders.front() ? name.str() : report.reference + "; " + name.str();
+        }
         if (report.at.empty()) {
             report.at = options.at;
             if (report.at.empty()) {
-                const CurveError span = curve_error(runs[finest].curve, reference, {});
+                const CurveError span = curve_error(runs.back()[finest].curve, reference, {});
                 for (double f : {0.25, 0.5, 0.75, 1.0}) report.at.push_back(span.from + f * (span.to - span.from));
             }
         }
-        std::vector<double> hs, errors;
-        for (std::size_t i = 0; i < runs.size(); ++i) {
-            StudyLevel l;
-            l.parameter = ladder.parameter;
-            l.level = ladder.levels[i];
-            l.seconds = runs[i].seconds;
-            l.repeats = runs[i].repeats;
-            l.steps = runs[i].summary.steps;
-            l.iterations = runs[i].summary.iterations;
-            l.status = runs[i].summary.reason;
-            l.is_reference = !fixed_reference && i == finest;
-            l.error = curve_error(runs[i].curve, reference, report.at);
-            if (!l.is_reference) {
-                hs.push_back(step_size(ladder.parameter, l.level));
-                errors.push_back(l.error.max);
+        for (std::size_t m = 0; m < methods.size(); ++m) {
+            std::vector<double> hs, errors;
+            for (std::size_t i = 0; i < runs[m].size(); ++i) {
+                const Solved& run = runs[m][i];
+                StudyLevel l;
+                l.method = methods[m];
+                l.parameter = ladder.parameter;
+                l.level = ladder.levels[i];
+                l.seconds = run.seconds;
+                l.repeats = run.repeats;
+                l.steps = run.summary.steps;
+                l.iterations = run.summary.iterations;
+                l.status = run.summary.reason;
+                l.is_reference = !fixed_reference && m + 1 == methods.size() && i == finest;
+                l.error = curve_error(run.curve, reference, report.at);
+                if (!l.is_reference) {
+                    hs.push_back(step_size(ladder.parameter, l.level));
+                    errors.push_back(l.error.max);
+                }
+                report.levels.push_back(l);
             }
-            report.levels.push_back(l);
+            report.observed_order.push_back({methods[m], ladder.parameter, slope(hs, errors)});
         }
-        report.observed_order.emplace_back(ladder.parameter, slope(hs, errors));
     }
     return report;
 }

@@ -24,9 +24,13 @@ struct StudyOptions {
     std::string reference = "finest"; // exact, finest, or a CSV file
     std::vector<double> at;           // displacements where the error is reported (default: quarters)
     double min_seconds = 0.3;         // repeat a level until this much time has passed (at most 7 runs)
+    // A method comparison: every ladder once per way of modelling plasticity ("hinges",
+    // "distributed"); the reference is then the finest level of the last method given.
+    std::vector<std::string> methods;
 };
 
 struct StudyLevel {
+    std::string method; // empty unless methods are compared
     std::string parameter;
     double level = 0.0;
     double seconds = 0.0; // median wall time of the analysis
@@ -40,7 +44,11 @@ struct StudyReport {
     std::string reference; // what the errors are measured against
     std::vector<double> at;
     std::vector<StudyLevel> levels;
-    std::vector<std::pair<std::string, double>> observed_order; // per parameter
+    struct Order {
+        std::string method, parameter;
+        double order = 0.0;
+    };
+    std::vector<Order> observed_order; // per method and parameter
 };
 
 // Throws SceneError for a bad scene, StudyError for a bad parameter or reference.

@@ -196,6 +196,12 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
     const Result bad = plastica("study " + model("ring_elastic.toml") + " --vary elements=ten,20 -o " + out.string());
     CHECK(bad.code == 2);
     CHECK_THAT(bad.output, Catch::Contains("'ten' is not a number"));
+    const Result method = plastica("study " + model("ring_inelastic.toml") + " --vary plasticity=hinges,zones --vary elements=10,20 -o " + out.string());
+    CHECK(method.code == 2);
+    CHECK_THAT(method.output, Catch::Contains("--vary plasticity: expected hinges or distributed, got 'zones'"));
+    const Result elastic = plastica("study " + model("ring_elastic.toml") + " --vary plasticity=hinges,distributed --vary elements=10,20 -o " + out.string());
+    CHECK(elastic.code == 2);
+    CHECK_THAT(elastic.output, Catch::Contains("no inelastic section whose plasticity could be varied"));
 
     const fs::path table = scratch("stability");
     // The whole sweep is a test of its own (study_tests); here the command on a part of it.

@@ -92,6 +92,23 @@ TEST_CASE("An elastic ring has no hinge layer and a scene without a base has no 
     CHECK(count_pixels(frame, [](Pixel p) { return is(p, colour::spring_anchor); }, 0, structure_right, band_bottom, 1) > 20);
 }
 
+TEST_CASE("A distributed-plasticity ring is shaded by the yielded share, without hinge markers", "[render][distributed]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_distributed", 50, "distributed");
+    render_series(series.string(), small(series / "pictures"));
+    // The warm end of the cool–warm map (a section yielded through): strong red, little green.
+    const auto yielded_through = [](Pixel p) { return p.r >= 150 && p.g <= 60 && p.b <= 70; };
+    auto last = read_png((series / "pictures" / "frames" / "frame_000200.png").string());
+    // At δ = 100 the sections under the load have yielded through: red at the top of the ring
+    // (upper half of the structure view), and no hinge colours anywhere.
+    CHECK(count_pixels(last, yielded_through, 0, structure_right, band_bottom, 0.6) > 10);
+    CHECK(count_pixels(last, [](Pixel p) { return is(p, colour::hinge_plastic); }) == 0);
+    CHECK(count_pixels(last, yielding_marker) == 0);
+    // Unloaded: nothing has yielded.
+    auto first = read_png((series / "pictures" / "frames" / "frame_000000.png").string());
+    CHECK(count_pixels(first, yielded_through, 0, structure_right, band_bottom, 1) == 0);
+}
+
 TEST_CASE("The chart's curve rises where the load rises", "[render]") {
     unsetenv("DISPLAY");
     const fs::path series = solved_series("ring_elastic", 10, "chart");

@@ -1,6 +1,7 @@
 // The VTU/PVD series is the contract between the engine and the render stage: read every
 // file back with VTK's own XML readers and compare with the engine's results.
 #include "analysis/path_following.hpp"
+#include "model/model.hpp"
 #include "scene_reader.hpp"
 #include "vtu_series_writer.hpp"
 
@@ -104,7 +105,7 @@ TEST_CASE("Every VTU step reads back through VTK with the engine's values to ful
 }
 
 TEST_CASE("Each ring scene writes exactly the arrays it needs", "[output]") {
-    for (const std::string scene : {"ring_elastic", "ring_inelastic", "ring_bilateral"}) {
+    for (const std::string scene : {"ring_elastic", "ring_inelastic", "ring_bilateral", "ring_distributed"}) {
         const Series s = run_with_series(scene, 2);
         vtkNew<vtkXMLUnstructuredGridReader> reader;
         reader->SetFileName((s.folder / "vtu" / step_file_name(2)).string().c_str());
@@ -119,6 +120,10 @@ TEST_CASE("Each ring scene writes exactly the arrays it needs", "[output]") {
         const bool inelastic = scene == "ring_inelastic", unilateral = scene != "ring_bilateral";
         CHECK(points.count("plastic_utilisation") == (inelastic ? 1u : 0u));
         CHECK(cells.count("ei_ratio") == (inelastic ? 1u : 0u));
+        const bool distributed = scene == "ring_distributed";
+        CHECK(cells.count("yielded_share") == (distributed ? 1u : 0u));
+        CHECK(cells.count("section_curvature") == (distributed ? 1u : 0u));
+        CHECK(points.count("hinge_state") == (inelastic ? 1u : 0u));
         CHECK(points.count("contact_force") == (unilateral ? 1u : 0u));
         CHECK(points.count("spring_force") == (unilateral ? 0u : 1u));
         // The base line (and spring anchors) as part 1 of the collection.
@@ -127,6 +132,41 @@ TEST_CASE("Each ring scene writes exactly the arrays it needs", "[output]") {
         base->Update();
         CHECK(base->GetOutput()->GetNumberOfLines() == (unilateral ? 1 : 0));
     }
+}
+
+TEST_CASE("The sections along the members read back at every integration point", "[output][distributed]") {
+    // Far enough for the top and the sides to yield (first yield near δ = 40 of 100).
+    const Series s = run_with_series("ring_distributed", 130);
+    const StepResult& r = s.steps.back();
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((s.folder / "vtu" / step_file_name(r.step)).string().c_str());
+    reader->Update();
+    vtkCellData* cd = reader->GetOutput()->GetCellData();
+    vtkDataArray* share = cd->GetArray("section_yielded_share");
+    vtkDataArray* curvature = cd->GetArray("section_curvature");
+    vtkDataArray* moment = cd->GetArray("section_moment");
+    vtkDataArray* largest = cd->GetArray("yielded_share");
+    REQUIRE(share);
+    REQUIRE(curvature);
+    REQUIRE(moment);
+    REQUIRE(largest);
+    CHECK(share->GetNumberOfComponents() == default_integration_points);
+    int yielded = 0;
+    for (vtkIdType e = 0; e < reader->GetOutput()->GetNumberOfCells(); ++e) {
+        const std::vector<SectionReport>& sections = r.elements[e].sections;
+        REQUIRE(sections.size() == static_cast<std::size_t>(default_integration_points));
+        double most = 0.0;
+        for (int k = 0; k < default_integration_points; ++k) {
+            CHECK(share->GetComponent(e, k) == sections[k].yielded_share);
+            CHECK(curvature->GetComponent(e, k) == sections[k].curvature);
+            CHECK(moment->GetComponent(e, k) == sections[k].moment);
+            most = std::max(most, sections[k].yielded_share);
+        }
+        CHECK(largest->GetComponent(e, 0) == most);
+        if (most > 0.0) ++yielded;
+    }
+    CHECK(yielded > 0);
+    CHECK(yielded < reader->GetOutput()->GetNumberOfCells()); // a zone, not the whole ring
 }
 
 TEST_CASE("A run stopped after k steps leaves a valid PVD of k steps", "[output]") {
