@@ -227,7 +227,7 @@ private:
                 r.fail("plasticity", "an inelastic section needs a material with 'fy'");
             if (plasticity == "distributed") {
                 s.plasticity = Plasticity::distributed;
-                s.integration_points = r.integer_or("integration_points", default_integration_points, 1, 10);
+                s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
             } else {
                 if (r.has("integration_points"))
                     r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");

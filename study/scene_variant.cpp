@@ -57,6 +57,14 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
         changed = set_in_tables(root, "line", "elements", value) + set_in_tables(root, "arc", "elements", value);
     } else if (parameter == "fibres") {
         changed = set_in_tables(root, "section", "fibres", value);
+    } else if (parameter == "integration_points") {
+        // Every section with distributed plasticity, whether or not it names the count.
+        if (toml::array* sections = root["section"].as_array())
+            for (toml::node& item : *sections)
+                if (toml::table* t = item.as_table(); t && (*t)["plasticity"].value_or(std::string()) == "distributed") {
+                    t->insert_or_assign("integration_points", static_cast<int64_t>(std::llround(value)));
+                    ++changed;
+                }
     } else if (parameter == "increment") {
         if (toml::table* a = root["analysis"].as_table(); a && a->contains("increment")) {
             const double old = a->get("increment")->value_or(value);
@@ -67,7 +75,7 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
             changed = 1;
         }
     } else {
-        throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres and increment");
+        throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres, integration_points and increment");
     }
     if (changed == 0) throw StudyError(file + ": no '" + parameter + "' to vary in this scene");
     if (!plasticity.empty() && set_plasticity(root, plasticity) == 0)

@@ -14,7 +14,7 @@
 namespace plastica {
 
 struct Ladder {
-    std::string parameter;      // elements, fibres or increment
+    std::string parameter;      // elements, fibres, integration_points or increment
     std::vector<double> levels; // in the order given
 };
 
