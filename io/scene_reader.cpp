@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace plastica {
@@ -101,7 +102,7 @@ public:
         read_analysis(top);
         read_report(top);
         top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
-                    "load", "prescribed", "foundation", "analysis", "report", "render"});
+                    "load", "prescribed", "foundation", "analysis", "report"});
         if (model_.loads.empty() && model_.prescribed.empty())
             throw SceneError(file_, 1, "load", "the scene has no [[load]] and no [[prescribed]] displacement");
         return std::move(model_);
@@ -161,6 +162,23 @@ private:
         }
     }
 
+    // A key of another shape ('diameter' on a rectangle) would be read by nothing: say whose it is.
+    static void refuse_keys_of_other_shapes(TomlTableReader& r, const std::string& shape) {
+        static const std::map<std::string, std::vector<std::string>> keys = {
+            {"properties", {"A", "I", "fibres"}},
+            {"rectangle", {"b", "h", "fibres"}},
+            {"i", {"depth", "flange_width", "flange_thickness", "web_thickness", "flange_strips", "flange_layers",
+                   "web_fibres", "residual_stress"}},
+            {"hollow_circle", {"diameter", "thickness", "fibres"}},
+            {"fibres", {"fibres"}},
+        };
+        const std::vector<std::string>& own = keys.at(shape);
+        for (const auto& [other, list] : keys)
+            for (const std::string& key : list)
+                if (other != shape && r.has(key) && std::find(own.begin(), own.end(), key) == own.end())
+                    r.fail(key, "a key of shape = \"" + other + "\", not of shape = \"" + shape + "\"");
+    }
+
     void read_sections(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "section");
         for (std::size_t i = 0; i < list.size(); ++i) {
@@ -171,6 +189,7 @@ private:
             auto m = materials_.find(material);
             if (m == materials_.end()) r.fail("material", "no [[material]] named '" + material + "'");
             const std::string shape = r.choice("shape", {"properties", "rectangle", "i", "hollow_circle", "fibres"}, "properties");
+            refuse_keys_of_other_shapes(r, shape);
             SectionSpec s;
             if (shape == "properties") {
                 s.E = m->second.E;
@@ -265,6 +284,14 @@ private:
 
     void add_element(int a, int b, int section, TomlTableReader& r, const std::string& key) {
         if (a == b) r.fail(key, "an element's two nodes coincide");
+        // The same member twice would double its stiffness without a word.
+        const auto pair = std::minmax(a, b);
+        if (!members_.insert({pair.first, pair.second}).second) {
+            std::ostringstream where;
+            where << "an element between " << describe_node(a) << " and " << describe_node(b)
+                  << " exists already (given twice, or two generators overlap)";
+            r.fail(key, where.str());
+        }
         if (static_cast<int>(model_.elements.size()) >= max_elements)
             r.fail(key, "more than " + std::to_string(max_elements) + " elements");
         model_.elements.push_back({a, b, section});
@@ -393,6 +420,12 @@ private:
         r.fail(key, s.str());
     }
 
+    bool supported(int node, int dof) const {
+        for (const Support& s : model_.supports)
+            if (s.node == node && s.fixed[dof]) return true;
+        return false;
+    }
+
     static int dof_index(TomlTableReader& r, const std::string& key, const std::string& name) {
         if (name == "ux") return 0;
         if (name == "uy") return 1;
@@ -426,6 +459,9 @@ private:
             l.value = {r.number_or("fx", 0.0), r.number_or("fy", 0.0), r.number_or("moment", 0.0)};
             if (l.value[0] == 0.0 && l.value[1] == 0.0 && l.value[2] == 0.0)
                 r.fail("", "a load needs a non-zero 'fx', 'fy' or 'moment'");
+            bool moves = false;
+            for (int d = 0; d < dofs_per_node; ++d) moves = moves || (l.value[d] != 0.0 && !supported(l.node, d));
+            if (!moves) r.fail("", "the load acts only on supported DOFs of the node at " + describe_node(l.node) + ": it moves nothing");
             r.finish({"node", "at", "fx", "fy", "moment"});
             model_.loads.push_back(l);
         }
@@ -439,6 +475,8 @@ private:
             p.node = node_ref(r);
             p.dof = dof_index(r, "dof", r.string("dof"));
             p.value = r.number("value");
+            if (supported(p.node, p.dof))
+                r.fail("dof", "this DOF is also supported ([[support]] fix): a prescribed displacement replaces the support there; remove it from 'fix'");
             r.finish({"node", "at", "dof", "value"});
             model_.prescribed.push_back(p);
         }
@@ -562,16 +600,40 @@ private:
         // size (Newton freezes them from its third iteration): a plastic zone asks for more.
         a.desired_iterations = r.integer_or("desired_iterations", model_.has_plasticity(Plasticity::distributed) ? 8 : 5, 1, 100);
         a.max_iterations = r.integer_or("max_iterations", 30, 1, 1000);
+        if (a.max_increment > 0.0 && a.min_increment > a.max_increment)
+            r.fail("min_increment", "must not exceed max_increment");
+        if (a.min_increment > a.initial_increment) r.fail("min_increment", "must not exceed the first increment");
+        if (r.has("max_increment") && a.max_increment < a.initial_increment)
+            r.fail("max_increment", "must not be below the first increment");
         a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
         a.residual_tolerance = r.positive_or("residual_tolerance", 1e-6);
         a.displacement_tolerance = r.positive_or("displacement_tolerance", 1e-6);
         a.allow_crossing = r.boolean_or("allow_crossing", false);
-        if (r.has("target_load_factor")) a.target_load_factor = r.number("target_load_factor");
+        if (r.has("target_load_factor") && r.has("target_displacement"))
+            r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");
+        if (r.has("target_load_factor"))
+            a.target_load_factor = r.positive("target_load_factor"); // a load the other way: reverse the [[load]]
         if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement");
         if (r.has("control_at") || r.has("control_node")) {
             a.control.node = node_ref(r, "control_node", "control_at");
             a.control.dof = dof_index(r, "control_dof", r.string_or("control_dof", "uy"));
-            a.control.sign = r.number_or("control_sign", 1.0) < 0.0 ? -1.0 : 1.0;
+            // The reported (and controlled) displacement runs with the load on the controlled DOF:
+            // by default its sign is the load's, and a sign against the load is refused.
+            double load_on_control = 0.0;
+            for (const NodalLoad& l : model_.loads)
+                if (l.node == a.control.node) load_on_control += l.value[a.control.dof];
+            const double along_load = load_on_control < 0.0 ? -1.0 : 1.0;
+            if (r.has("control_sign")) {
+                const double sign = r.number("control_sign");
+                if (sign != 1.0 && sign != -1.0) r.fail("control_sign", "expected 1 or -1");
+                if (load_on_control != 0.0 && sign != along_load)
+                    r.fail("control_sign", "the load on the controlled DOF points the other way: with control_sign = " +
+                                               std::string(sign > 0 ? "1" : "-1") + " the structure would be pushed against it; use " +
+                                               std::string(along_load > 0 ? "1" : "-1") + " (or leave it out)");
+                a.control.sign = sign;
+            } else {
+                a.control.sign = along_load;
+            }
         } else if (a.scheme == Scheme::displacement_control || a.target_displacement) {
             r.fail("", "missing 'control_at' (the point whose displacement controls or stops the analysis)");
         } else if (!model_.loads.empty()) {
@@ -612,7 +674,42 @@ private:
         if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x");
         if (!model_.report.exact.empty() && model_.report.exact != "cantilever_tip_load")
             r.fail("exact", "the closed forms known are: cantilever_tip_load");
+        if (model_.report.exact == "cantilever_tip_load" && !is_cantilever_with_tip_load())
+            r.fail("exact", "cantilever_tip_load is the closed form of a straight elastic cantilever, clamped at one end, "
+                            "with one transverse load at the other and nothing else; this scene is not one");
+        if (model_.report.mirror_x) {
+            // A half model lies on one side of its symmetry line.
+            const double x0 = *model_.report.mirror_x, tol = 1e-9 * size_scale_;
+            bool left = false, right = false;
+            for (const Node& n : model_.nodes) left = left || n.x < x0 - tol, right = right || n.x > x0 + tol;
+            if (left && right) r.fail("mirror_x", "the structure lies on both sides of this line: a half model lies on one side");
+        }
         r.finish({"load_scale", "load_label", "displacement_label", "exact", "mirror_x"});
+    }
+
+    bool is_cantilever_with_tip_load() const {
+        const Model& m = model_;
+        if (m.inelastic() || !m.springs.empty() || !m.prescribed.empty() || m.supports.size() != 1 || m.loads.size() != 1)
+            return false;
+        const Support& s = m.supports.front();
+        if (!(s.fixed[0] && s.fixed[1] && s.fixed[2])) return false;
+        // A chain of elements from the clamp: every node on the line through the clamp and the
+        // loaded node, each node in at most two elements, the clamp and the load at the ends.
+        const Node& a = m.nodes[s.node];
+        const Node& b = m.nodes[m.loads.front().node];
+        const double L = std::hypot(b.x - a.x, b.y - a.y);
+        if (!(L > 0.0)) return false;
+        const double c = (b.x - a.x) / L, sn = (b.y - a.y) / L;
+        std::vector<int> degree(m.nodes.size(), 0);
+        for (const ElementSpec& e : m.elements) ++degree[e.node_i], ++degree[e.node_j];
+        for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+            const double along = (m.nodes[k].x - a.x) * c + (m.nodes[k].y - a.y) * sn;
+            const double across = -(m.nodes[k].x - a.x) * sn + (m.nodes[k].y - a.y) * c;
+            if (std::abs(across) > 1e-9 * L || along < -1e-9 * L || along > L * (1 + 1e-9) || degree[k] > 2) return false;
+        }
+        if (degree[s.node] != 1 || degree[m.loads.front().node] != 1) return false;
+        const auto& f = m.loads.front().value;
+        return f[2] == 0.0 && std::abs(f[0] * c + f[1] * sn) <= 1e-12 * std::hypot(f[0], f[1]);
     }
 
     const toml::table& root_;
@@ -623,6 +720,7 @@ private:
     NodeIndex node_index_;
     std::map<int, int> node_ids_;
     std::map<std::string, std::vector<int>> groups_;
+    std::set<std::pair<int, int>> members_; // node pairs with an element
     double size_scale_ = 0.0;
 };
 

@@ -61,7 +61,7 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"unknown key with suggestion", replaced("elements = 2", "elements = 2\nsectoin = \"s\""), "'line[1].sectoin': unknown key; did you mean 'section'?", 15},
         {"negative length", replaced("A = 1.0", "A = -1.0"), "'section[1].A': expected a positive number, got -1", 9},
         {"missing section", replaced("section = \"s\"", "section = \"t\""), "'line[1].section': no [[section]] named 't'", 15},
-        {"node out of range", good + "[[element]]\nnodes = [1, 9]\nsection = \"s\"\n", "no [[node]] with id 1", 27},
+        {"node out of range", good + "[[node]]\nid = 1\nx = 2.0\ny = 0.0\n[[element]]\nnodes = [1, 9]\nsection = \"s\"\n", "'element[1].nodes': no [[node]] with id 9", 31},
         {"NaN", replaced("E = 1000.0", "E = nan"), "'material[1].E': expected a finite number", 5},
         {"infinity", replaced("I = 1.0", "I = inf"), "'section[1].I': expected a finite number", 10},
         {"wrong type", replaced("elements = 2", "elements = \"two\""), "'line[1].elements': expected a whole number", 14},
@@ -72,7 +72,7 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"bad scheme", replaced("scheme = \"load_control\"", "scheme = \"newton\""), "'analysis.scheme': expected one of 'arc_length', 'load_control', 'displacement_control', got 'newton'", 23},
         {"missing stop", replaced("target_load_factor = 1.0\n", ""), "missing a stop", 22},
         {"bad DOF name", replaced("fix = [\"ux\", \"uy\", \"rz\"]", "fix = [\"ux\", \"uz\"]"), "expected 'ux', 'uy' or 'rz', got 'uz'", 18},
-        {"TOML syntax", replaced("E = 1000.0", "E = = 1000.0"), "", 5},
+        {"TOML syntax", replaced("E = 1000.0", "E = = 1000.0"), "could not determine value type", 5},
         {"missing scene name", replaced("name = \"bar\"\n", ""), "missing required key 'name'", 1},
         {"unsafe scene name", replaced("name = \"bar\"", "name = \"../etc\""), "'scene.name': expected 1 to 64 letters", 2},
         {"duplicate material", replaced("[[section]]", "[[material]]\nname = \"m\"\nE = 1.0\n[[section]]"), "a material named 'm' exists already", 7},
@@ -90,10 +90,23 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"bad ultimate strain", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nultimate_strain = 0.0001"), "expected 0 (never fails) or a strain above fy/E", 7},
         {"bilateral foundation with a base", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.0]\n", "a base line belongs to a unilateral foundation", 29},
         {"fibres off the centroid", replaced("A = 1.0\nI = 1.0", "shape = \"fibres\"\nfibres = [[1.0, 0.5], [1.0, 1.5]]"), "measured from the centroid", 10},
-        {"every DOF held", replaced("fix = [\"ux\", \"uy\", \"rz\"]", "fix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [0.5, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [1.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]"), "every degree of freedom is supported or prescribed", 28},
+        {"every DOF held", good.substr(0, good.find("[[support]]")) + "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [0.5, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [1.0, 0.0]\nfix = [\"ux\", \"rz\"]\n[[prescribed]]\nat = [1.0, 0.0]\ndof = \"uy\"\nvalue = -1.0\n[analysis]\nscheme = \"load_control\"\nincrement = 0.1\ntarget_load_factor = 1.0\n", "every degree of freedom is supported or prescribed", 29},
         {"controlled DOF prescribed", good.substr(0, good.find("[analysis]")) + "[[prescribed]]\nat = [1.0, 0.0]\ndof = \"uy\"\nvalue = -1.0\n[analysis]\nscheme = \"displacement_control\"\nincrement = 0.1\ncontrol_at = [1.0, 0.0]\ncontrol_dof = \"uy\"\ntarget_displacement = 1.0\n", "the controlled DOF has a prescribed displacement", 30},
+        // What the scene says is what runs: contradictions are refused, not resolved silently.
+        {"control against the load", good.substr(0, good.find("[analysis]")) + "[analysis]\nscheme = \"displacement_control\"\nincrement = 0.1\ncontrol_at = [1.0, 0.0]\ncontrol_dof = \"uy\"\ntarget_displacement = 0.5\n" + "control_sign = 1.0\n", "the load on the controlled DOF points the other way", 28},
+        {"control sign zero", good.substr(0, good.find("[analysis]")) + "[analysis]\nscheme = \"displacement_control\"\nincrement = 0.1\ncontrol_at = [1.0, 0.0]\ncontrol_dof = \"uy\"\ntarget_displacement = 0.5\n" + "control_sign = 0.0\n", "'analysis.control_sign': expected 1 or -1", 28},
+        {"negative target load factor", replaced("target_load_factor = 1.0", "target_load_factor = -1.0"), "'analysis.target_load_factor': expected a positive number", 25},
+        {"two stops", replaced("target_load_factor = 1.0", "target_load_factor = 1.0\ncontrol_at = [1.0, 0.0]\ntarget_displacement = 0.5"), "give one stop", 27},
+        {"min above max increment", replaced("increment = 0.1", "increment = 0.1\nmin_increment = 0.05\nmax_increment = 0.01"), "'analysis.min_increment': must not exceed max_increment", 25},
+        {"min above first increment", replaced("increment = 0.1", "increment = 0.1\nmin_increment = 0.5"), "'analysis.min_increment': must not exceed the first increment", 25},
+        {"member given twice", good + "[[node]]\nid = 1\nx = 0.0\ny = 0.0\n[[node]]\nid = 2\nx = 0.5\ny = 0.0\n[[element]]\nnodes = [2, 1]\nsection = \"s\"\n", "an element between [0.5, 0] and [0, 0] exists already", 35},
+        {"load on a supported DOF", replaced("at = [1.0, 0.0]\nfy = -1.0", "at = [0.0, 0.0]\nfy = -1.0"), "the load acts only on supported DOFs of the node at [0, 0]", 19},
+        {"support and prescribed on one DOF", replaced("[analysis]", "[[prescribed]]\nat = [0.0, 0.0]\ndof = \"uy\"\nvalue = 0.1\n[analysis]"), "this DOF is also supported", 24},
+        {"mirror through the middle", good + "[report]\nmirror_x = 0.5\n", "the structure lies on both sides of this line", 27},
+        {"exact form of another scene", good.substr(0, good.find("[[load]]")) + "[[load]]\nat = [1.0, 0.0]\nfx = 1.0\n" + good.substr(good.find("[analysis]")) + "[report]\nexact = \"cantilever_tip_load\"\n", "this scene is not one", 27},
+        {"key of another shape", replaced("A = 1.0", "A = 1.0\ndiameter = 0.2"), "'section[1].diameter': a key of shape = \"hollow_circle\", not of shape = \"properties\"", 10},
+        {"a table nothing reads", good + "[render]\nfield = \"gap\"\n", "'render': unknown key", 26},
     };
-    CHECK(cases.size() >= 30);
     for (const Case& c : cases) {
         INFO(c.what);
         try {
