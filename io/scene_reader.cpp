@@ -665,8 +665,22 @@ private:
 
     void read_report(TomlTableReader& top) {
         const toml::table* t = top.table("report");
+        // Loads in more than one direction have no total an engineer would call the load:
+        // then the load factor is reported, and labelled so.
+        const bool parallel = model_.loads_parallel();
+        if (!parallel) {
+            model_.report.measure = ReportSpec::Measure::factor;
+            model_.report.load_label = "load factor";
+        }
         if (!t) return;
         TomlTableReader r(*t, file_, "report");
+        if (r.has("load")) {
+            const std::string measure = r.choice("load", {"total", "factor"}, "total");
+            if (measure == "total" && !parallel)
+                r.fail("load", "the loads are not parallel, so their total has no direction: report the load factor (load = \"factor\")");
+            model_.report.measure = measure == "total" ? ReportSpec::Measure::total : ReportSpec::Measure::factor;
+            if (measure == "factor") model_.report.load_label = "load factor";
+        }
         model_.report.load_scale = r.positive_or("load_scale", 1.0);
         model_.report.load_label = r.string_or("load_label", model_.report.load_label);
         model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
@@ -684,7 +698,7 @@ private:
             for (const Node& n : model_.nodes) left = left || n.x < x0 - tol, right = right || n.x > x0 + tol;
             if (left && right) r.fail("mirror_x", "the structure lies on both sides of this line: a half model lies on one side");
         }
-        r.finish({"load_scale", "load_label", "displacement_label", "exact", "mirror_x"});
+        r.finish({"load", "load_scale", "load_label", "displacement_label", "exact", "mirror_x"});
     }
 
     bool is_cantilever_with_tip_load() const {

@@ -56,6 +56,37 @@ TEST_CASE("The reference scene used by the error table is valid", "[scene]") {
     CHECK(m.elements.size() == 2);
 }
 
+TEST_CASE("The reported load is the total of parallel loads, else the load factor, labelled so", "[scene][load]") {
+    // Twelve downward nodal loads totalling 150 on a beam: the load is 150 λ (not the
+    // Euclidean norm of the load vector, 150/√12 = 43.3).
+    std::string beam = good.substr(0, good.find("[[support]]"));
+    beam.replace(beam.find("elements = 2"), 12, "elements = 12");
+    beam += "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n";
+    for (int k = 1; k <= 12; ++k)
+        beam += "[[load]]\nat = [" + std::to_string(k / 12.0) + ", 0.0]\nfy = -12.5\n";
+    const std::string analysis = "[analysis]\nscheme = \"load_control\"\nincrement = 0.1\ntarget_load_factor = 1.0\n";
+    const Model parallel = read_scene_text(beam + analysis, "beam.toml");
+    CHECK(parallel.load_per_factor() == Approx(150.0).epsilon(1e-14));
+    CHECK(parallel.report.load_label == "load");
+    // A lateral load beside them: no single direction, so the factor, and the label says so.
+    const Model mixed = read_scene_text(beam + "[[load]]\nat = [1.0, 0.0]\nfx = 3.0\n" + analysis, "mixed.toml");
+    CHECK(mixed.load_per_factor() == 1.0);
+    CHECK(mixed.report.load_label == "load factor");
+    // ... and asking for their total is refused.
+    CHECK_THROWS_WITH(read_scene_text(beam + "[[load]]\nat = [1.0, 0.0]\nfx = 3.0\n" + analysis + "[report]\nload = \"total\"\n", "mixed.toml"),
+                      Catch::Contains("mixed.toml:") && Catch::Contains("'report.load': the loads are not parallel"));
+    // Parallel loads may be reported as the factor on request; the half-model scale applies.
+    const Model factor = read_scene_text(beam + analysis + "[report]\nload = \"factor\"\nload_scale = 2.0\n", "f.toml");
+    CHECK(factor.load_per_factor() == 2.0);
+    CHECK(factor.report.load_label == "load factor");
+    // An end moment alone: the load is the moment.
+    const Model moment = read_scene_text(replaced("fy = -1.0", "moment = 4.0"), "m.toml");
+    CHECK(moment.load_per_factor() == 4.0);
+    // Opposite parallel forces add with their signs along the first one's direction.
+    const Model opposed = read_scene_text(replaced("fy = -1.0", "fy = -3.0\n[[load]]\nat = [0.5, 0.0]\nfy = 1.0"), "o.toml");
+    CHECK(opposed.load_per_factor() == Approx(2.0));
+}
+
 TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors]") {
     const std::vector<Case> cases = {
         {"unknown key with suggestion", replaced("elements = 2", "elements = 2\nsectoin = \"s\""), "'line[1].sectoin': unknown key; did you mean 'section'?", 15},

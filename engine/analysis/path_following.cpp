@@ -33,8 +33,7 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     StepResult r;
     r.step = step;
     r.load_factor = lambda_;
-    const double norm = model_.reference_load_norm();
-    r.load = model_.report.load_scale * lambda_ * (norm > 0.0 ? norm : 1.0);
+    r.load = lambda_ * model_.load_per_factor();
     r.control_displacement = control_value(u_);
     r.arc_length = arc_length_;
     r.iterations = iterations;

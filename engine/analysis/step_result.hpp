@@ -30,7 +30,7 @@ struct SpringResult {
 struct StepResult {
     int step = 0;                   // 0 is the unloaded state
     double load_factor = 0.0;       // λ
-    double load = 0.0;              // reported load (λ · ‖F_ref‖ · load_scale)
+    double load = 0.0;              // reported load, λ · Model::load_per_factor()
     double control_displacement = 0.0;
     double arc_length = 0.0;        // cumulative path length, monotone
     int iterations = 0;

@@ -31,11 +31,35 @@ bool Model::has_unilateral_base() const {
     return false;
 }
 
-double Model::reference_load_norm() const {
-    double sum = 0.0;
-    for (const auto& l : loads)
-        for (double v : l.value) sum += v * v;
-    return std::sqrt(sum);
+namespace {
+// The first non-zero load as a direction in (fx, fy, moment) space.
+std::array<double, 3> first_direction(const std::vector<NodalLoad>& loads) {
+    for (const NodalLoad& l : loads) {
+        const double n = std::sqrt(l.value[0] * l.value[0] + l.value[1] * l.value[1] + l.value[2] * l.value[2]);
+        if (n > 0.0) return {l.value[0] / n, l.value[1] / n, l.value[2] / n};
+    }
+    return {0.0, 0.0, 0.0};
+}
+} // namespace
+
+bool Model::loads_parallel() const {
+    const std::array<double, 3> d = first_direction(loads);
+    for (const NodalLoad& l : loads) {
+        // Parallel to d: no component across it (a force with a moment is not parallel to a force).
+        const double along = l.value[0] * d[0] + l.value[1] * d[1] + l.value[2] * d[2];
+        double across = 0.0;
+        for (int k = 0; k < 3; ++k) across += (l.value[k] - along * d[k]) * (l.value[k] - along * d[k]);
+        if (std::sqrt(across) > 1e-12 * std::abs(along) + 1e-300) return false;
+    }
+    return true;
+}
+
+double Model::load_per_factor() const {
+    if (report.measure == ReportSpec::Measure::factor || loads.empty()) return report.load_scale;
+    const std::array<double, 3> d = first_direction(loads);
+    double total = 0.0;
+    for (const NodalLoad& l : loads) total += l.value[0] * d[0] + l.value[1] * d[1] + l.value[2] * d[2];
+    return report.load_scale * std::abs(total);
 }
 
 } // namespace plastica

@@ -118,7 +118,11 @@ struct AnalysisSpec {
 };
 
 struct ReportSpec {
-    double load_scale = 1.0; // reported load = load_scale * λ * ‖reference load‖ (symmetry)
+    // The reported load: λ times the total of the reference loads along their common direction
+    // (forces all parallel, or moments only), or λ itself where they are not parallel (or the
+    // scene asks for the factor); times load_scale (2 for a half model).
+    enum class Measure { total, factor } measure = Measure::total;
+    double load_scale = 1.0;
     std::string load_label = "load";                         // axis and title names in pictures
     std::string displacement_label = "control displacement";
     std::string exact;  // a closed form this scene has ("cantilever_tip_load"), for `plastica study`
@@ -145,7 +149,10 @@ struct Model {
     bool has_plasticity(Plasticity kind) const; // some element's section models it this way
     int integration_points() const;             // most points of a distributed-plasticity element
     bool has_unilateral_base() const;
-    double reference_load_norm() const;
+    // Whether the reference loads have one direction (parallel forces, or moments only).
+    bool loads_parallel() const;
+    // The reported load per unit load factor (ReportSpec::measure, load_scale included).
+    double load_per_factor() const;
 };
 
 } // namespace plastica
