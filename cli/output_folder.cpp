@@ -1,9 +1,9 @@
 #include "output_folder.hpp"
 
+#include "run_report.hpp"
+
 #include <filesystem>
 #include <fstream>
-#include <regex>
-#include <sstream>
 #include <stdexcept>
 
 namespace plastica::cli {
@@ -14,26 +14,13 @@ std::string default_output_folder(const std::string& scene_name) {
     return (fs::path("out") / scene_name).string();
 }
 
-namespace {
-// The scene name recorded in an earlier run.json, or "" when there is none.
-std::string recorded_scene(const fs::path& folder) {
-    std::ifstream in(folder / "run.json");
-    if (!in) return {};
-    std::stringstream text;
-    text << in.rdbuf();
-    std::smatch m;
-    const std::string s = text.str();
-    if (std::regex_search(s, m, std::regex("\"scene\":\\s*\"([^\"]*)\""))) return m[1];
-    return {};
-}
-} // namespace
 
 void prepare_output_folder(const std::string& folder, const std::string& scene_name, bool force) {
     const fs::path dir(folder);
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw std::runtime_error("output path " + folder + " exists and is not a folder");
     if (fs::exists(dir)) {
-        const std::string other = recorded_scene(dir);
+        const std::string other = recorded_scene((dir / "run.json").string());
         const bool foreign = !other.empty() && other != scene_name;
         const bool unknown = other.empty() && !fs::is_empty(dir);
         if ((foreign || unknown) && !force)

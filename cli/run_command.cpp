@@ -77,6 +77,7 @@ int run_command(const Args& args) {
         return bad_input;
     }
     const double read_seconds = seconds_since(t0);
+    write_run_started((std::filesystem::path(folder) / "run.json").string(), model, scene_file);
 
     namespace fs = std::filesystem;
     CurveWriter curve((fs::path(folder) / "curve.csv").string());

@@ -22,5 +22,10 @@ struct RunReport {
 
 std::string to_json(const RunReport& report);
 void write_run_report(const std::string& path, const RunReport& report);
+// Written when a run starts ("status": "running"), so that a folder whose run was killed
+// still says which scene it holds.
+void write_run_started(const std::string& path, const Model& model, const std::string& scene_file);
+// The scene named by a run.json of Plastica's, or "" (no file, not JSON, another program's).
+std::string recorded_scene(const std::string& run_json);
 
 } // namespace plastica

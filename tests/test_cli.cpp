@@ -211,6 +211,35 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
     CHECK(fs::exists(table / "stability.csv"));
 }
 
+TEST_CASE("After a SIGKILL the folder still names its scene, and the same run may use it again", "[cli][signal]") {
+    const fs::path dir = scratch("sigkill");
+    fs::create_directories(dir);
+    std::ifstream in(model("ring_inelastic.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    s.replace(s.find("increment = 0.5"), 15, "increment = 0.01");
+    s.replace(s.find("max_steps = 400"), 15, "max_steps = 20000");
+    std::ofstream(dir / "long.toml") << s;
+    const fs::path out = dir / "out";
+    // Killed without a chance to clean up: run.json is the one written at the start.
+    const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " run " + (dir / "long.toml").string() +
+                            " -o " + out.string() + " -q --no-render > /dev/null 2>&1 & pid=$!; sleep 1; kill -KILL $pid; wait $pid";
+    const int status = std::system(cmd.c_str());
+    CHECK(WEXITSTATUS(status) == 128 + 9);
+    std::ifstream report(out / "run.json");
+    std::stringstream json;
+    json << report.rdbuf();
+    CHECK_THAT(json.str(), Catch::Contains("\"status\": \"running\""));
+    CHECK_THAT(json.str(), Catch::Contains("\"scene\": \"ring_inelastic\""));
+    // The same scene again into its own folder: accepted, not "files of another program".
+    CHECK(plastica("run " + model("ring_inelastic.toml") + " -o " + out.string() + " --no-render -q").code == 0);
+    // Another scene into it is still refused.
+    const Result other = plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render -q");
+    CHECK(other.code == 2);
+    CHECK_THAT(other.output, Catch::Contains("holds results of scene 'ring_inelastic'"));
+}
+
 TEST_CASE("Ctrl-C and SIGTERM stop a run cleanly: exit 130, valid series, run.json says so", "[cli][signal]") {
     const fs::path dir = scratch("signal");
     fs::create_directories(dir);
