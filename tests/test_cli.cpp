@@ -49,6 +49,17 @@ fs::path edited_model(const fs::path& dir, const std::string& name, const std::s
     return path;
 }
 
+// The inelastic ring in 10 000 steps: long enough to be stopped mid-way.
+void write_long_run(const fs::path& path) {
+    std::ifstream in(model("ring_inelastic.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    s.replace(s.find("increment = 0.5"), 15, "increment = 0.01");
+    s.replace(s.find("max_steps = 400"), 15, "max_steps = 20000");
+    std::ofstream(path) << s;
+}
+
 } // namespace
 
 TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json and the series", "[cli]") {
@@ -214,13 +225,7 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
 TEST_CASE("After a SIGKILL the folder still names its scene, and the same run may use it again", "[cli][signal]") {
     const fs::path dir = scratch("sigkill");
     fs::create_directories(dir);
-    std::ifstream in(model("ring_inelastic.toml"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    s.replace(s.find("increment = 0.5"), 15, "increment = 0.01");
-    s.replace(s.find("max_steps = 400"), 15, "max_steps = 20000");
-    std::ofstream(dir / "long.toml") << s;
+    write_long_run(dir / "long.toml");
     const fs::path out = dir / "out";
     // Killed without a chance to clean up: run.json is the one written at the start.
     const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " run " + (dir / "long.toml").string() +
@@ -243,14 +248,7 @@ TEST_CASE("After a SIGKILL the folder still names its scene, and the same run ma
 TEST_CASE("Ctrl-C and SIGTERM stop a run cleanly: exit 130, valid series, run.json says so", "[cli][signal]") {
     const fs::path dir = scratch("signal");
     fs::create_directories(dir);
-    // The inelastic ring in 10 000 steps: long enough to be stopped mid-way.
-    std::ifstream in(model("ring_inelastic.toml"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    s.replace(s.find("increment = 0.5"), 15, "increment = 0.01");
-    s.replace(s.find("max_steps = 400"), 15, "max_steps = 20000");
-    std::ofstream(dir / "long.toml") << s;
+    write_long_run(dir / "long.toml");
     for (const char* signal : {"INT", "TERM"}) {
         const fs::path out = dir / signal;
         // Started in the background, stopped after two seconds; the shell reports its exit code.
