@@ -1,5 +1,5 @@
 // plastica run: read a scene, solve it, write curve.csv, run.json and the VTU/PVD series,
-// then render the series unless --no-render.
+// then render the series unless --no-render (--curves-only: curve.csv and run.json alone).
 #include "commands.hpp"
 #include "options.hpp"
 #include "output_folder.hpp"
@@ -16,6 +16,7 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace plastica::cli {
 
@@ -37,7 +38,9 @@ int run_command(const Args& args) {
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>)")
         ("every", po::value<int>()->default_value(1), "write every k-th step (first and last always)")
         ("time", po::value<std::string>()->default_value("step"), "PVD time: step or arc_length")
+        ("compression", po::value<std::string>()->default_value("zlib"), "VTU compression: none, lz4 or zlib (ParaView reads all three)")
         ("no-render", "solve and write results only, draw nothing")
+        ("curves-only", "write curve.csv and run.json only: no VTU series, no pictures (sweeps)")
         ("force", "use an output folder that holds another scene's results")
         ("quiet,q", "no progress on stderr");
     add_render_options(options);
@@ -64,6 +67,11 @@ int run_command(const Args& args) {
         std::cerr << "plastica: --every takes a whole number ≥ 1 and --time 'step' or 'arc_length'\n";
         return bad_input;
     }
+    const std::string compression = vm["compression"].as<std::string>();
+    if (compression != "none" && compression != "lz4" && compression != "zlib") {
+        std::cerr << "plastica: --compression takes none, lz4 or zlib, got '" << compression << "'\n";
+        return bad_input;
+    }
     PathFollowing analysis(model);
     if (const std::string m = analysis.initial_mechanism(); !m.empty()) {
         std::cerr << "plastica: " << scene_file << ": " << m << "\n";
@@ -81,7 +89,13 @@ int run_command(const Args& args) {
 
     namespace fs = std::filesystem;
     CurveWriter curve((fs::path(folder) / "curve.csv").string());
-    VtuSeriesWriter series(model, folder, {every, time == "step" ? SeriesTime::step : SeriesTime::arc_length});
+    const bool curves_only = vm.count("curves-only") > 0;
+    std::optional<VtuSeriesWriter> series;
+    if (!curves_only)
+        series.emplace(model, folder,
+                       SeriesOptions{every, time == "step" ? SeriesTime::step : SeriesTime::arc_length,
+                                     compression == "none" ? Compression::none
+                                     : compression == "lz4" ? Compression::lz4 : Compression::zlib});
     RunReport report;
     report.scene_file = scene_file;
     report.model = &model;
@@ -101,8 +115,10 @@ int run_command(const Args& args) {
     RunControl control;
     control.interrupt = &stop_requested;
     const auto t1 = std::chrono::steady_clock::now();
-    report.summary = analysis.run({std::ref(curve), std::ref(series), track}, control);
-    series.finish();
+    std::vector<StepObserver> observers{std::ref(curve), track};
+    if (series) observers.emplace_back(std::ref(*series));
+    report.summary = analysis.run(observers, control);
+    if (series) series->finish();
     report.stage_seconds = {{"read", read_seconds}, {"analysis_and_output", seconds_since(t1)}};
     write_run_report((fs::path(folder) / "run.json").string(), report);
     std::signal(SIGINT, SIG_DFL);
@@ -114,7 +130,7 @@ int run_command(const Args& args) {
                   << report.peak_load << "; output in " << folder << "\n";
     if (report.summary.status == RunStatus::interrupted) return interrupted;
     // The converged steps are drawn even when the analysis stopped early.
-    if (!vm.count("no-render") && report.summary.steps > 0) {
+    if (!vm.count("no-render") && !curves_only && report.summary.steps > 0) {
         render_options.quiet = quiet;
         if (const int code = render_and_report(folder, render_options); code != ok) return code;
     }

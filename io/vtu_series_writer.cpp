@@ -60,11 +60,15 @@ void add_field(vtkFieldData* fd, const char* name, double value) {
 // VTK's writer makes hundreds of small writes and seeks per file; it writes into memory
 // here, and the file goes out in one piece under a temporary name, then is renamed.
 template <class Writer>
-void write_xml(Writer* writer, const std::string& path) {
+void write_xml(Writer* writer, const std::string& path, Compression compression = Compression::zlib) {
     writer->WriteToOutputStringOn();
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
+    switch (compression) {
+    case Compression::none: writer->SetCompressorTypeToNone(); break;
+    case Compression::lz4: writer->SetCompressorTypeToLZ4(); break;
+    case Compression::zlib: writer->SetCompressorTypeToZLib(); break;
+    }
     if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + path);
     write_file_atomically(path, writer->GetOutputString());
 }
@@ -317,9 +321,9 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     grid->Modified();
 
     const std::string name = step_file_name(r.step);
-    write_xml(impl_->writer.Get(), (fs::path(directory_) / "vtu" / name).string());
+    write_xml(impl_->writer.Get(), (fs::path(directory_) / "vtu" / name).string(), options_.compression);
     entries_.emplace_back(time, "vtu/" + name);
-    write_pvd();
+    append_to_pvd(time, "vtu/" + name);
 }
 
 void VtuSeriesWriter::write_base() {
@@ -364,18 +368,30 @@ void VtuSeriesWriter::write_base() {
     has_base_file_ = true;
 }
 
-void VtuSeriesWriter::write_pvd() const {
+void VtuSeriesWriter::append_to_pvd(double time, const std::string& file) {
+    static const char closing[] = "  </Collection>\n</VTKFile>\n";
+    if (!pvd_) {
+        // Created whole through a temporary file and a rename, then kept open.
+        write_file_atomically(pvd_path_, "<?xml version=\"1.0\"?>\n"
+                                         "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+                                         "  <Collection>\n" + std::string(closing));
+        pvd_.reset(std::fopen(pvd_path_.c_str(), "r+b"));
+        if (!pvd_) throw std::runtime_error("cannot open " + pvd_path_);
+        std::fseek(pvd_.get(), 0, SEEK_END);
+        pvd_tail_ = std::ftell(pvd_.get()) - static_cast<long>(sizeof closing - 1);
+    }
     std::ostringstream x;
     x.precision(17);
-    x << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n  <Collection>\n";
-    for (const auto& [time, file] : entries_) {
-        x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
-        if (has_base_file_)
-            x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"1\" file=\"base.vtp\"/>\n";
-    }
-    x << "  </Collection>\n</VTKFile>\n";
-    write_file_atomically(pvd_path_, x.str());
+    x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+    if (has_base_file_) x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"1\" file=\"base.vtp\"/>\n";
+    const std::string entry = x.str();
+    // One write of the new entries and the closing tags over the old closing tags: the file
+    // is a complete collection before and after it.
+    const std::string tail = entry + closing;
+    if (std::fseek(pvd_.get(), pvd_tail_, SEEK_SET) != 0 ||
+        std::fwrite(tail.data(), 1, tail.size(), pvd_.get()) != tail.size() || std::fflush(pvd_.get()) != 0)
+        throw std::runtime_error("cannot write " + pvd_path_);
+    pvd_tail_ += static_cast<long>(entry.size());
 }
 
 } // namespace plastica

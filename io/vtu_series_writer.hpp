@@ -1,6 +1,7 @@
 // Observer that writes every k-th converged step as out/<scene>/vtu/step_NNNNNN.vtu through
-// VTK's XML writer (appended, zlib, Float64), and keeps <scene>.pvd valid after each step
-// (rewritten whole through a temporary file and a rename). The PVD time is monotone (the
+// VTK's XML writer (appended, zlib, Float64), and keeps <scene>.pvd valid after each step in
+// O(1): the new entries are written over the closing tags, which follow them again (the file
+// is never rewritten whole, whatever the step count). The PVD time is monotone (the
 // step index, or the cumulative arc length); the load factor is field data. The base line and
 // spring anchors go once to base.vtp, listed as part 1 of every time step.
 // Arrays are written only where the scene has them (DESIGN §5).
@@ -9,6 +10,7 @@
 #include "analysis/step_result.hpp"
 #include "model/model.hpp"
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,9 +20,13 @@ namespace plastica {
 
 enum class SeriesTime { step, arc_length };
 
+// ParaView 5.11 reads all three; the default is chosen by measurement (README, Performance).
+enum class Compression { none, lz4, zlib };
+
 struct SeriesOptions {
     int every = 1;                  // write every k-th step (the first and last always)
     SeriesTime time = SeriesTime::step;
+    Compression compression = Compression::zlib;
 };
 
 class VtuSeriesWriter {
@@ -43,7 +49,7 @@ public:
 private:
     void write_step(const StepResult& r);
     void write_base();
-    void write_pvd() const;
+    void append_to_pvd(double time, const std::string& file);
 
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -52,6 +58,8 @@ private:
     std::string pvd_path_;
     SeriesOptions options_;
     std::vector<std::pair<double, std::string>> entries_; // time, relative file name
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> pvd_{nullptr, &std::fclose};
+    long pvd_tail_ = 0; // where the closing tags start
     bool has_base_file_ = false;
     std::optional<StepResult> pending_;                   // last skipped step
 };

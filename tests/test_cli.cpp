@@ -222,6 +222,28 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
     CHECK(fs::exists(table / "stability.csv"));
 }
 
+TEST_CASE("A curves-only run writes curve.csv and run.json, no series, with the same exit codes", "[cli]") {
+    const fs::path out = scratch("curves_only");
+    const Result r = plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --curves-only -q");
+    CHECK(r.code == 0);
+    CHECK(fs::exists(out / "run.json"));
+    CHECK_FALSE(fs::exists(out / "vtu"));
+    CHECK_FALSE(fs::exists(out / "ring_elastic.pvd"));
+    CHECK_FALSE(fs::exists(out / "frames"));
+    std::ifstream csv(out / "curve.csv");
+    std::string line, last;
+    int rows = 0;
+    while (std::getline(csv, line)) last = line, ++rows;
+    CHECK(rows == 202); // header, step 0 and 200 steps
+    CHECK(last.rfind("200,", 0) == 0);
+    // A run that stops early still exits 3, its converged steps kept.
+    const fs::path dir = scratch("curves_only_short");
+    const fs::path scene = edited_model(dir, "short.toml", "max_steps = 400", "max_steps = 5");
+    const Result stopped = plastica("run " + scene.string() + " -o " + (dir / "out").string() + " --curves-only -q");
+    CHECK(stopped.code == 3);
+    CHECK(fs::exists(dir / "out" / "curve.csv"));
+}
+
 TEST_CASE("After a SIGKILL the folder still names its scene, and the same run may use it again", "[cli][signal]") {
     const fs::path dir = scratch("sigkill");
     fs::create_directories(dir);

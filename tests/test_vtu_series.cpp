@@ -36,15 +36,16 @@ struct Series {
     fs::path folder;
 };
 
-Series run_with_series(const std::string& scene, int max_steps, int every = 1) {
+Series run_with_series(const std::string& scene, int max_steps, int every = 1, Compression compression = Compression::zlib) {
     Series s;
     s.model = read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/" + scene + ".toml");
     s.model.analysis.max_steps = max_steps;
     // Unique per scene, step count and stride: CTest runs these test cases in parallel.
     s.folder = fs::temp_directory_path() /
-               ("plastica_vtu_" + scene + "_" + std::to_string(max_steps) + "_" + std::to_string(every));
+               ("plastica_vtu_" + scene + "_" + std::to_string(max_steps) + "_" + std::to_string(every) + "_" +
+                std::to_string(static_cast<int>(compression)));
     fs::remove_all(s.folder);
-    VtuSeriesWriter writer(s.model, s.folder.string(), {every, SeriesTime::step});
+    VtuSeriesWriter writer(s.model, s.folder.string(), {every, SeriesTime::step, compression});
     PathFollowing analysis(s.model);
     analysis.run({std::ref(writer), [&](const StepResult& r) { s.steps.push_back(r); }});
     writer.finish();
@@ -204,4 +205,24 @@ TEST_CASE("run.json is valid JSON whatever the scene path holds", "[output]") {
     CHECK(j["scene"] == "ring_elastic");
     CHECK(j["seconds"]["analysis"] == 1.5);
     CHECK_FALSE(j.contains("section_solve_failures")); // an elastic scene has no hinges
+}
+
+TEST_CASE("Uncompressed, LZ4 and zlib series read back equal to the engine", "[output]") {
+    for (const Compression c : {Compression::none, Compression::lz4, Compression::zlib}) {
+        const Series s = run_with_series("ring_inelastic", 5, 1, c);
+        CAPTURE(static_cast<int>(c));
+        for (const StepResult& r : s.steps) {
+            vtkNew<vtkXMLUnstructuredGridReader> reader;
+            reader->SetFileName((s.folder / "vtu" / step_file_name(r.step)).string().c_str());
+            reader->Update();
+            vtkUnstructuredGrid* grid = reader->GetOutput();
+            REQUIRE(grid->GetNumberOfPoints() == static_cast<vtkIdType>(s.model.nodes.size()));
+            vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
+            vtkDataArray* n = grid->GetCellData()->GetArray("axial_force");
+            REQUIRE(u);
+            REQUIRE(n);
+            for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) CHECK(u->GetComponent(i, 1) == r.displacement[3 * i + 1]);
+            for (vtkIdType e = 0; e < grid->GetNumberOfCells(); ++e) CHECK(n->GetComponent(e, 0) == r.elements[e].forces.axial);
+        }
+    }
 }
