@@ -38,7 +38,7 @@ int run_command(const Args& args) {
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>)")
         ("every", po::value<int>()->default_value(1), "write every k-th step (first and last always)")
         ("time", po::value<std::string>()->default_value("step"), "PVD time: step or arc_length")
-        ("compression", po::value<std::string>()->default_value("zlib"), "VTU compression: none, lz4 or zlib (ParaView reads all three)")
+        ("compression", po::value<std::string>()->default_value("none"), "VTU compression: none (the fastest, default), lz4 or zlib; ParaView reads all three")
         ("no-render", "solve and write results only, draw nothing")
         ("curves-only", "write curve.csv and run.json only: no VTU series, no pictures (sweeps)")
         ("force", "use an output folder that holds another scene's results")

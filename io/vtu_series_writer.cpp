@@ -1,4 +1,5 @@
 #include "vtu_series_writer.hpp"
+#include "raw_vtu_format.hpp"
 
 #include "atomic_file.hpp"
 
@@ -321,7 +322,11 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     grid->Modified();
 
     const std::string name = step_file_name(r.step);
-    write_xml(impl_->writer.Get(), (fs::path(directory_) / "vtu" / name).string(), options_.compression);
+    const std::string path = (fs::path(directory_) / "vtu" / name).string();
+    if (options_.compression == Compression::none)
+        write_file_atomically(path, raw_vtu(grid)); // the lean writer: same format, a fraction of the time
+    else
+        write_xml(impl_->writer.Get(), path, options_.compression);
     entries_.emplace_back(time, "vtu/" + name);
     append_to_pvd(time, "vtu/" + name);
 }

@@ -26,7 +26,7 @@ enum class Compression { none, lz4, zlib };
 struct SeriesOptions {
     int every = 1;                  // write every k-th step (the first and last always)
     SeriesTime time = SeriesTime::step;
-    Compression compression = Compression::zlib;
+    Compression compression = Compression::none;
 };
 
 class VtuSeriesWriter {
