@@ -1,5 +1,6 @@
-// Observer that writes every k-th converged step as out/<scene>/vtu/step_NNNNNN.vtu through
-// VTK's XML writer (appended, zlib, Float64), and keeps <scene>.pvd valid after each step in
+// Observer that writes every k-th converged step as out/<scene>/vtu/step_NNNNNN.vtu (appended
+// raw data: uncompressed by the lean writer of raw_vtu_format.hpp, or LZ4 or zlib through VTK's
+// XML writer), and keeps <scene>.pvd valid after each step in
 // O(1): the new entries are written over the closing tags, which follow them again (the file
 // is never rewritten whole, whatever the step count). The PVD time is monotone (the
 // step index, or the cumulative arc length); the load factor is field data. The base line and
