@@ -15,7 +15,9 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <cmath>
 #include <iostream>
+#include <sstream>
 #include <optional>
 
 namespace plastica::cli {
@@ -71,6 +73,27 @@ int run_command(const Args& args) {
     if (compression != "none" && compression != "lz4" && compression != "zlib") {
         std::cerr << "plastica: --compression takes none, lz4 or zlib, got '" << compression << "'\n";
         return bad_input;
+    }
+    // Unbounded work is refused before it starts: the series could hold up to max_steps/every
+    // VTU files (fewer when a fixed increment reaches the target sooner).
+    if (!vm.count("curves-only")) {
+        const AnalysisSpec& a = model.analysis;
+        double steps = a.max_steps;
+        if (!a.adaptive && a.target_load_factor && a.scheme == Scheme::load_control)
+            steps = std::min(steps, std::ceil(*a.target_load_factor / a.initial_increment));
+        if (!a.adaptive && a.target_displacement && a.scheme == Scheme::displacement_control)
+            steps = std::min(steps, std::ceil(*a.target_displacement / a.initial_increment));
+        const double files = std::floor(steps / every) + 2;
+        const double bytes = files * (120.0 * model.nodes.size() + 150.0 * model.elements.size() + 2000.0);
+        if (files > 1e6 || bytes > 20e9) {
+            std::ostringstream why;
+            why.precision(3);
+            why << "plastica: " << scene_file << ": the series could hold " << files << " VTU files, about "
+                << bytes / 1e9 << " GB (up to " << a.max_steps << " steps, every " << every
+                << "); pass --every K to write every K-th step, or --curves-only\n";
+            std::cerr << why.str();
+            return bad_input;
+        }
     }
     PathFollowing analysis(model);
     if (const std::string m = analysis.initial_mechanism(); !m.empty()) {

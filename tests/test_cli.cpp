@@ -244,6 +244,26 @@ TEST_CASE("A curves-only run writes curve.csv and run.json, no series, with the 
     CHECK(fs::exists(dir / "out" / "curve.csv"));
 }
 
+TEST_CASE("A series that would fill a disk is refused before the run, with the way out", "[cli]") {
+    const fs::path dir = scratch("unbounded");
+    // 10 000 000 steps of a fixed tiny increment: about 10 million files.
+    const fs::path scene = edited_model(dir, "tiny.toml", "max_steps = 400", "max_steps = 10000000");
+    fs::path tiny = dir / "tinier.toml";
+    {
+        std::ifstream in(scene);
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string s = text.str();
+        s.replace(s.find("increment = 0.5"), 15, "increment = 0.00001");
+        std::ofstream(tiny) << s;
+    }
+    const Result r = plastica("run " + tiny.string() + " -o " + (dir / "out").string() + " -q");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("VTU files") && Catch::Contains("--every"));
+    CHECK_FALSE(fs::exists(dir / "out"));
+    // With --every large enough, or curves only, the same scene is accepted (not run here).
+}
+
 TEST_CASE("After a SIGKILL the folder still names its scene, and the same run may use it again", "[cli][signal]") {
     const fs::path dir = scratch("sigkill");
     fs::create_directories(dir);
