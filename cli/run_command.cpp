@@ -8,6 +8,7 @@
 #include "analysis/path_following.hpp"
 #include "curve_writer.hpp"
 #include "run_report.hpp"
+#include "scene_overrides.hpp"
 #include "scene_reader.hpp"
 #include "vtu_series_writer.hpp"
 
@@ -37,6 +38,8 @@ int run_command(const Args& args) {
     po::options_description options("Options");
     options.add_options()
         ("scene", po::value<std::string>()->required(), "scene file (TOML)")
+        ("set", po::value<std::vector<std::string>>()->composing(),
+         "KEY=VALUE: override a scene key by its path, e.g. material[steel].fy=250, analysis.increment=0.25 (repeatable)")
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>)")
         ("every", po::value<int>()->default_value(1), "write every k-th step (first and last always)")
         ("time", po::value<std::string>()->default_value("step"), "PVD time: step or arc_length")
@@ -55,8 +58,11 @@ int run_command(const Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::string scene_file = vm["scene"].as<std::string>();
     Model model;
+    std::vector<Override> overrides;
     try {
-        model = read_scene(scene_file);
+        if (vm.count("set"))
+            for (const std::string& text : vm["set"].as<std::vector<std::string>>()) overrides.push_back(parse_override(text));
+        model = read_scene(scene_file, overrides);
     } catch (const SceneError& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;
@@ -121,6 +127,7 @@ int run_command(const Args& args) {
                                      : compression == "lz4" ? Compression::lz4 : Compression::zlib});
     RunReport report;
     report.scene_file = scene_file;
+    for (const Override& o : overrides) report.overrides.emplace_back(o.path, o.value);
     report.model = &model;
     const bool quiet = vm.count("quiet") > 0;
     auto track = [&](const StepResult& r) {

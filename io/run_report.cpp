@@ -24,6 +24,11 @@ Json header(const Model& model, const std::string& scene_file) {
 
 std::string to_json(const RunReport& r) {
     Json j = header(*r.model, r.scene_file);
+    if (!r.overrides.empty()) {
+        Json set = Json::object();
+        for (const auto& [path, value] : r.overrides) set[path] = value;
+        j["overrides"] = set;
+    }
     j["status"] = to_string(r.summary.status);
     j["reason"] = r.summary.reason;
     j["steps"] = r.summary.steps;

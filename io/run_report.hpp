@@ -12,6 +12,7 @@ namespace plastica {
 
 struct RunReport {
     std::string scene_file;
+    std::vector<std::pair<std::string, std::string>> overrides; // --set KEY=VALUE, in order
     const Model* model = nullptr;
     RunSummary summary;
     std::vector<std::pair<std::string, double>> stage_seconds;

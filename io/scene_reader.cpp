@@ -748,6 +748,10 @@ Model read_scene_text(const std::string& text, const std::string& name_for_error
         throw SceneError(name_for_errors, static_cast<int>(e.source().begin.line), "",
                          std::string(e.description()));
     }
+    return read_scene_table(root, name_for_errors);
+}
+
+Model read_scene_table(const toml::table& root, const std::string& name_for_errors) {
     Model m = SceneBuilder(root, name_for_errors).build();
     m.source = name_for_errors;
     return m;

@@ -244,6 +244,22 @@ TEST_CASE("A curves-only run writes curve.csv and run.json, no series, with the 
     CHECK(fs::exists(dir / "out" / "curve.csv"));
 }
 
+TEST_CASE("run --set overrides scene keys and run.json records them", "[cli][overrides]") {
+    const fs::path out = scratch("overrides");
+    const Result r = plastica("run " + model("ring_inelastic.toml") + " --set section[ring].plasticity=distributed" +
+                              " --set analysis.target_displacement=10 -o " + out.string() + " --curves-only -q");
+    CHECK(r.code == 0);
+    std::ifstream in(out / "run.json");
+    std::stringstream json;
+    json << in.rdbuf();
+    CHECK_THAT(json.str(), Catch::Contains("\"section[ring].plasticity\": \"distributed\""));
+    CHECK_THAT(json.str(), Catch::Contains("\"analysis.target_displacement\": \"10\""));
+    CHECK_THAT(json.str(), Catch::Contains("\"control_displacement\": 10"));
+    const Result bad = plastica("run " + model("ring_inelastic.toml") + " --set material[steel].fy=-1 -o " + out.string() + " -q");
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("--set material[steel].fy: expected a positive number, got -1"));
+}
+
 TEST_CASE("A series that would fill a disk is refused before the run, with the way out", "[cli]") {
     const fs::path dir = scratch("unbounded");
     // 10 000 000 steps of a fixed tiny increment: about 10 million files.

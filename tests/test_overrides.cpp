@@ -1,0 +1,56 @@
+// Command-line overrides of scene keys (--set KEY=VALUE): by index and by name, typed values,
+// and errors that name the override rather than a line of the file.
+#include "scene_overrides.hpp"
+#include "scene_reader.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace plastica;
+
+namespace {
+std::string ring() { return std::string(PLASTICA_SOURCE_DIR) + "/models/ring_inelastic.toml"; }
+
+Model with(std::initializer_list<const char*> texts) {
+    std::vector<Override> o;
+    for (const char* t : texts) o.push_back(parse_override(t));
+    return read_scene(ring(), o);
+}
+
+std::string error_of(std::initializer_list<const char*> texts) {
+    try {
+        with(texts);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+} // namespace
+
+TEST_CASE("Overrides set keys by index and by name, read as TOML values", "[scene][overrides]") {
+    const Model plain = read_scene(ring());
+    CHECK(plain.sections[0].steel->fy == 36518.0);
+    CHECK(with({"material[1].fy=20000"}).sections[0].steel->fy == 20000.0);
+    CHECK(with({"material[steel].fy=1.5e4"}).sections[0].steel->fy == 15000.0);
+    CHECK(with({"arc[ring].elements=20"}).elements.size() == 20u);
+    CHECK(with({"analysis.increment=0.25"}).analysis.initial_increment == 0.25);
+    CHECK(with({"analysis.adaptive=true"}).analysis.adaptive);
+    // A bare word is a string; a key the file does not have is added (and validated).
+    const Model d = with({"section[ring].plasticity=distributed", "section[ring].integration_points=4"});
+    CHECK(d.sections[0].plasticity == Plasticity::distributed);
+    CHECK(d.sections[0].integration_points == 4);
+    // Later overrides win.
+    CHECK(with({"foundation[1].ky=10", "foundation[1].ky=20"}).springs[1].ky == 20.0);
+}
+
+TEST_CASE("A bad override is named in its error", "[scene][overrides]") {
+    CHECK(error_of({"material[steel].fy=-1"}) == "--set material[steel].fy: expected a positive number, got -1");
+    CHECK(error_of({"analysis.incremnt=2"}) == "--set analysis.incremnt: unknown key; did you mean 'increment'?");
+    CHECK(error_of({"material[iron].fy=2"}) == "--set material[iron].fy: no [[material]] named 'iron'");
+    CHECK(error_of({"material[3].fy=2"}) == "--set material[3].fy: the scene has 1 [[material]] table(s), not 3");
+    CHECK(error_of({"foundation[1].ky=abc def"}) ==
+          "--set foundation[1].ky: cannot read 'abc def' as a TOML value (quote strings with spaces)");
+    CHECK(error_of({"analysis"}) == "--set analysis: expected KEY=VALUE, e.g. material[steel].fy=250");
+    CHECK(error_of({"material.fy=2"}) == "--set material.fy: 'material' is not a table (a list: name one, e.g. material[1])");
+    // A value the key does not accept.
+    CHECK_THAT(error_of({"section[ring].plasticity=zones"}), Catch::Contains("--set section[ring].plasticity: expected one of"));
+}
