@@ -17,5 +17,7 @@ int render_command(const Args& args);
 int compare_command(const Args& args);
 int study_command(const Args& args);
 int stability_command(const Args& args);
+int sweep_command(const Args& args);
+int merge_command(const Args& args);
 
 } // namespace plastica::cli

@@ -18,6 +18,8 @@ Commands:
   study SCENE      error against run time over element, fibre and increment ladders
   stability        the sweep of stiff and extreme cases, each against its expected outcome
   section SCENE    moment-curvature and N-M capacity curves of a scene's sections
+  sweep SCENE      many runs of a scene with keys varied (grid or Monte Carlo); sweep.csv
+  merge DIR        sweep.csv from the runs a sweep folder holds (after GNU Parallel or Slurm)
 
 Run 'plastica COMMAND --help' for the options of a command.
 Exit codes: 0 success, 1 comparison failed, 2 bad input, 3 analysis stopped early,
@@ -35,7 +37,8 @@ int main(int argc, char** argv) {
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     mallopt(M_TOP_PAD, 64 << 20);
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"study", study_command}, {"stability", stability_command}, {"section", section_command}};
+        {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"study", study_command}, {"stability", stability_command}, {"section", section_command},
+        {"sweep", sweep_command}, {"merge", merge_command}};
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
         std::cout << usage;
         return argc < 2 ? bad_input : ok;

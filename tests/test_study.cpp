@@ -6,6 +6,7 @@
 #include "stability_cases.hpp"
 #include "study.hpp"
 #include "study_error.hpp"
+#include "sweep.hpp"
 #include "verification/cantilever_elastica.hpp"
 
 #include <catch2/catch.hpp>
@@ -159,4 +160,44 @@ TEST_CASE("Robustness matrix: every variant of the inelastic ring completes to i
 
 TEST_CASE("Robustness matrix: frame, arch and beams complete past their peaks", "[study][stability][robustness]") {
     check_cases(part(true, false));
+}
+
+TEST_CASE("A sweep's grid varies the first key slowest; zipped lists run side by side", "[sweep]") {
+    const SweepPlan grid = grid_plan({{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}, false);
+    REQUIRE(grid.ids.size() == 6u);
+    CHECK(grid.ids.front() == "r0001");
+    CHECK(grid.values[0] == std::vector<std::string>{"1", "x"});
+    CHECK(grid.values[2] == std::vector<std::string>{"1", "z"});
+    CHECK(grid.values[3] == std::vector<std::string>{"2", "x"});
+    const SweepPlan zip = grid_plan({{"a", {"1", "2"}}, {"b", {"x", "y"}}}, true);
+    REQUIRE(zip.ids.size() == 2u);
+    CHECK(zip.values[1] == std::vector<std::string>{"2", "y"});
+    CHECK_THROWS_WITH(grid_plan({{"a", {"1", "2"}}, {"b", {"x"}}}, true), Catch::Contains("same length"));
+}
+
+TEST_CASE("A Monte Carlo sample is reproducible and follows its law", "[sweep]") {
+    const SampledKey normal = parse_sample("material[steel].fy=normal:250:20");
+    const SweepPlan a = sample_plan({normal}, 4000, 42), b = sample_plan({normal}, 4000, 42), c = sample_plan({normal}, 4000, 43);
+    CHECK(a.values == b.values);
+    CHECK(a.values != c.values);
+    double sum = 0.0, squares = 0.0;
+    for (const auto& row : a.values) {
+        const double v = std::stod(row[0]);
+        sum += v;
+        squares += v * v;
+    }
+    const double n = 4000.0, mean = sum / n, sd = std::sqrt(squares / n - mean * mean);
+    // Sampling error of the mean σ/√n = 0.32 and of σ about σ/√(2n) = 0.22: within 4 of each.
+    CHECK(std::abs(mean - 250.0) < 4.0 * 20.0 / std::sqrt(n));
+    CHECK(std::abs(sd - 20.0) < 4.0 * 20.0 / std::sqrt(2.0 * n));
+    // Adding a key leaves the values of the first unchanged.
+    const SweepPlan two = sample_plan({normal, parse_sample("k=uniform:1:2")}, 4000, 42);
+    for (std::size_t r = 0; r < 10; ++r) CHECK(two.values[r][0] == a.values[r][0]);
+    for (const auto& row : two.values) {
+        const double u = std::stod(row[1]);
+        CHECK((u >= 1.0 && u <= 2.0));
+    }
+    for (const auto& row : sample_plan({parse_sample("k=lognormal:0:0.5")}, 200, 1).values) CHECK(std::stod(row[0]) > 0.0);
+    CHECK_THROWS_WITH(parse_sample("k=gauss:1:2"), Catch::Contains("expected normal"));
+    CHECK_THROWS_WITH(parse_sample("k=normal:1:-2"), Catch::Contains("σ must be positive"));
 }

@@ -1,0 +1,220 @@
+// plastica sweep: a plan of runs (grid, zipped lists or a Monte Carlo sample of scene
+// overrides), run by a pool of `plastica run --curves-only` processes, one per core, or written
+// as jobs for GNU Parallel and a Slurm array; plastica merge: sweep.csv from whatever runs exist.
+#include "commands.hpp"
+#include "options.hpp"
+#include "output_folder.hpp"
+
+#include "scene_error.hpp"
+#include "scene_overrides.hpp"
+#include "scene_reader.hpp"
+#include "study_error.hpp"
+#include "sweep.hpp"
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <fcntl.h>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace plastica::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> stop_requested{false};
+extern "C" void request_sweep_stop(int) { stop_requested = true; }
+
+std::vector<std::string> split(const std::string& text, char by) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string p; std::getline(in, p, by);) parts.push_back(p);
+    return parts;
+}
+
+std::vector<double> displacements(const po::variables_map& vm) {
+    std::vector<double> at;
+    if (!vm.count("at")) return at;
+    for (const std::string& t : split(vm["at"].as<std::string>(), ',')) {
+        try {
+            at.push_back(std::stod(t));
+        } catch (const std::exception&) {
+            throw StudyError("--at: '" + t + "' is not a number");
+        }
+    }
+    return at;
+}
+
+// This program's own path, so that every run is the same plastica.
+std::string self() {
+    std::error_code ec;
+    const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string("plastica") : p.string();
+}
+
+pid_t launch(const std::string& program, const std::vector<std::string>& args, const fs::path& log) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    std::vector<char*> argv{const_cast<char*>(program.c_str())};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = -1;
+    const int error = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    return error == 0 ? pid : -1;
+}
+
+int report(const std::string& dir, const std::vector<double>& at) {
+    const SweepSummary s = write_sweep_csv(dir, at);
+    std::cout << dir << "/sweep.csv: " << s.runs << " runs, " << s.completed << " completed, " << s.stopped
+              << " stopped early, " << s.failed << " failed, " << s.missing << " missing\n";
+    auto list = [](const char* what, const std::vector<std::string>& ids) {
+        if (ids.empty()) return;
+        std::cout << what << ":";
+        for (const std::string& id : ids) std::cout << ' ' << id;
+        std::cout << "\n";
+    };
+    list("failed (see logs/<id>.txt)", s.failed_ids);
+    list("missing (run the sweep again to run only these)", s.missing_ids);
+    return s.missing > 0 || s.failed > 0 ? stopped_early : ok;
+}
+
+} // namespace
+
+int sweep_command(const Args& args) {
+    po::options_description options("Options");
+    options.add_options()
+        ("scene", po::value<std::string>()->required(), "scene file (TOML)")
+        ("vary", po::value<std::vector<std::string>>()->composing(), "KEY=v1,v2,… (repeatable): a grid over the values")
+        ("zip", "take the --vary lists side by side instead of their grid")
+        ("sample", po::value<std::vector<std::string>>()->composing(), "KEY=normal:μ:σ | lognormal:μ:σ | uniform:a:b (repeatable)")
+        ("samples", po::value<int>()->default_value(100), "number of sampled runs")
+        ("seed", po::value<std::uint64_t>()->default_value(1), "seed of the sample (the same seed, the same values)")
+        ("output,o", po::value<std::string>(), "sweep folder (default out/<scene>/sweep)")
+        ("jobs,j", po::value<int>()->default_value(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))), "runs at a time")
+        ("emit", po::value<std::string>(), "'jobs': write jobs.txt and sweep.sbatch instead of running")
+        ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100");
+    po::positional_options_description positional;
+    positional.add("scene", 1);
+    po::variables_map vm;
+    if (auto code = parse_options(args, "plastica sweep SCENE --vary KEY=v1,v2 [--vary …] [--zip] | --sample KEY=law:a:b --samples N --seed S [-o DIR] [--emit jobs]",
+                                  options, positional, vm))
+        return *code;
+    const std::string scene = fs::absolute(vm["scene"].as<std::string>()).string();
+    std::string dir;
+    SweepPlan plan;
+    std::vector<double> at;
+    try {
+        const Model model = read_scene(scene);
+        // Absolute: jobs.txt and the Slurm script may run from any directory.
+        dir = fs::absolute(vm.count("output") ? fs::path(vm["output"].as<std::string>())
+                                              : fs::path(default_output_folder(model.name)) / "sweep").lexically_normal().string();
+        at = displacements(vm);
+        if (vm.count("sample")) {
+            if (vm.count("vary")) throw StudyError("give --vary (a grid) or --sample (Monte Carlo), not both");
+            std::vector<SampledKey> keys;
+            for (const std::string& t : vm["sample"].as<std::vector<std::string>>()) keys.push_back(parse_sample(t));
+            plan = sample_plan(keys, vm["samples"].as<int>(), vm["seed"].as<std::uint64_t>());
+        } else {
+            if (!vm.count("vary")) throw StudyError("give --vary KEY=v1,v2,… or --sample KEY=law:a:b");
+            std::vector<std::pair<std::string, std::vector<std::string>>> lists;
+            for (const std::string& t : vm["vary"].as<std::vector<std::string>>()) {
+                const auto eq = t.find('=');
+                if (eq == std::string::npos || eq == 0) throw StudyError("--vary takes KEY=v1,v2,… (got '" + t + "')");
+                lists.push_back({t.substr(0, eq), split(t.substr(eq + 1), ',')});
+            }
+            plan = grid_plan(lists, vm.count("zip") > 0);
+        }
+        // The keys must exist and take such values: check the first run before starting any.
+        std::vector<Override> first;
+        for (std::size_t k = 0; k < plan.keys.size(); ++k) first.push_back({plan.keys[k], plan.values.front()[k]});
+        read_scene(scene, first);
+    } catch (const SceneError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    } catch (const StudyError& e) {
+        std::cerr << "plastica: " << vm["scene"].as<std::string>() << ": " << e.what() << "\n";
+        return bad_input;
+    }
+    // A folder with another plan is not mixed into this one.
+    if (fs::exists(fs::path(dir) / "plan.csv")) {
+        const SweepPlan old = read_plan(dir);
+        if (old.keys != plan.keys || old.values != plan.values) {
+            std::cerr << "plastica: " << dir << " holds another sweep (plan.csv differs); choose another folder with -o\n";
+            return bad_input;
+        }
+    }
+    write_plan(dir, plan);
+    fs::create_directories(fs::path(dir) / "logs");
+    if (vm.count("emit")) {
+        if (vm["emit"].as<std::string>() != "jobs") {
+            std::cerr << "plastica: --emit takes 'jobs'\n";
+            return bad_input;
+        }
+        write_jobs(dir, self(), scene, plan);
+        std::cout << dir << "/jobs.txt: " << plan.ids.size() << " runs. Run them with GNU Parallel:\n"
+                  << "  parallel --joblog " << dir << "/joblog < " << dir << "/jobs.txt\n"
+                  << "or as a Slurm array: sbatch " << dir << "/sweep.sbatch\n"
+                  << "then: plastica merge " << dir << "\n";
+        return ok;
+    }
+    // The pool: up to --jobs runs at a time; a finished run (an earlier, interrupted sweep) is
+    // not run again.
+    std::signal(SIGINT, request_sweep_stop);
+    std::signal(SIGTERM, request_sweep_stop);
+    const int jobs = std::max(1, vm["jobs"].as<int>());
+    const std::string program = self();
+    std::map<pid_t, std::string> running;
+    std::size_t next = 0, skipped = 0;
+    while ((next < plan.ids.size() && !stop_requested) || !running.empty()) {
+        while (!stop_requested && next < plan.ids.size() && static_cast<int>(running.size()) < jobs) {
+            const std::size_t r = next++;
+            if (run_finished(dir, plan.ids[r])) {
+                ++skipped;
+                continue;
+            }
+            const pid_t pid = launch(program, run_arguments(scene, dir, plan, r), fs::path(dir) / "logs" / (plan.ids[r] + ".txt"));
+            if (pid > 0) running[pid] = plan.ids[r];
+        }
+        if (running.empty()) break;
+        int status = 0;
+        const pid_t done = ::waitpid(-1, &status, 0);
+        if (done > 0) running.erase(done);
+    }
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (skipped > 0) std::cout << skipped << " runs had finished before and were kept\n";
+    const int code = report(dir, at);
+    return stop_requested ? interrupted : code;
+}
+
+int merge_command(const Args& args) {
+    po::options_description options("Options");
+    options.add_options()
+        ("folder", po::value<std::string>()->required(), "sweep folder")
+        ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100");
+    po::positional_options_description positional;
+    positional.add("folder", 1);
+    po::variables_map vm;
+    if (auto code = parse_options(args, "plastica merge SWEEP_DIR [--at d1,d2]", options, positional, vm)) return *code;
+    try {
+        return report(vm["folder"].as<std::string>(), displacements(vm));
+    } catch (const StudyError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    }
+}
+
+} // namespace plastica::cli
