@@ -11,11 +11,16 @@
 #include "study_error.hpp"
 #include "sweep.hpp"
 
+#include "render_error.hpp"
+#include "sweep_charts.hpp"
+
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <spawn.h>
@@ -76,6 +81,39 @@ pid_t launch(const std::string& program, const std::vector<std::string>& args, c
     return error == 0 ? pid : -1;
 }
 
+// The charts of the runs that finished (drawn by the render stage from the results).
+void draw_charts(const std::string& dir, const std::string& scene_file, bool sampled) {
+    const SweepPlan plan = read_plan(dir);
+    render::SweepCharts charts;
+    charts.keys = plan.keys;
+    charts.sampled = sampled;
+    charts.scene = fs::path(dir).parent_path().filename().string();
+    if (!scene_file.empty()) {
+        const Model model = read_scene(scene_file);
+        charts.scene = model.name;
+        charts.load_label = model.report.load_label;
+        charts.displacement_label = model.report.displacement_label;
+    }
+    for (const SweepRunResult& r : read_sweep_results(dir, plan)) {
+        if (!r.finished || r.displacement.size() < 2) continue;
+        render::SweepChartRun run;
+        for (const std::string& v : r.values) {
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            run.values.push_back(end && *end == '\0' && end != v.c_str() ? x : NAN);
+        }
+        run.peak_load = r.peak_load;
+        run.displacement = r.displacement;
+        run.load = r.load;
+        charts.runs.push_back(std::move(run));
+    }
+    try {
+        for (const std::string& file : render::draw_sweep_charts(charts, dir)) std::cout << "-> " << file << "\n";
+    } catch (const render::RenderError& e) {
+        std::cerr << "plastica: cannot draw the sweep's charts: " << e.what() << "\n";
+    }
+}
+
 int report(const std::string& dir, const std::vector<double>& at) {
     const SweepSummary s = write_sweep_csv(dir, at);
     std::cout << dir << "/sweep.csv: " << s.runs << " runs, " << s.completed << " completed, " << s.stopped
@@ -105,7 +143,8 @@ int sweep_command(const Args& args) {
         ("output,o", po::value<std::string>(), "sweep folder (default out/<scene>/sweep)")
         ("jobs,j", po::value<int>()->default_value(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))), "runs at a time")
         ("emit", po::value<std::string>(), "'jobs': write jobs.txt and sweep.sbatch instead of running")
-        ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100");
+        ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100")
+        ("no-charts", "sweep.csv only, no charts");
     po::positional_options_description positional;
     positional.add("scene", 1);
     po::variables_map vm;
@@ -157,6 +196,11 @@ int sweep_command(const Args& args) {
         }
     }
     write_plan(dir, plan);
+    if (vm.count("sample")) {
+        std::ofstream laws(fs::path(dir) / "sample.txt");
+        for (const std::string& t : vm["sample"].as<std::vector<std::string>>()) laws << "--sample " << t << "\n";
+        laws << "--samples " << vm["samples"].as<int>() << "\n--seed " << vm["seed"].as<std::uint64_t>() << "\n";
+    }
     fs::create_directories(fs::path(dir) / "logs");
     if (vm.count("emit")) {
         if (vm["emit"].as<std::string>() != "jobs") {
@@ -197,6 +241,7 @@ int sweep_command(const Args& args) {
     std::signal(SIGTERM, SIG_DFL);
     if (skipped > 0) std::cout << skipped << " runs had finished before and were kept\n";
     const int code = report(dir, at);
+    if (!vm.count("no-charts")) draw_charts(dir, scene, vm.count("sample") > 0);
     return stop_requested ? interrupted : code;
 }
 
@@ -204,13 +249,18 @@ int merge_command(const Args& args) {
     po::options_description options("Options");
     options.add_options()
         ("folder", po::value<std::string>()->required(), "sweep folder")
+        ("scene", po::value<std::string>(), "the sweep's scene file, for the labels of the charts")
         ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100");
     po::positional_options_description positional;
     positional.add("folder", 1);
     po::variables_map vm;
     if (auto code = parse_options(args, "plastica merge SWEEP_DIR [--at d1,d2]", options, positional, vm)) return *code;
     try {
-        return report(vm["folder"].as<std::string>(), displacements(vm));
+        const std::string dir = vm["folder"].as<std::string>();
+        const int code = report(dir, displacements(vm));
+        // A sampled sweep left its laws in sample.txt: then the distribution is drawn too.
+        draw_charts(dir, vm.count("scene") ? vm["scene"].as<std::string>() : "", fs::exists(fs::path(dir) / "sample.txt"));
+        return code;
     } catch (const StudyError& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;

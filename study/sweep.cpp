@@ -313,4 +313,25 @@ SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& 
     return summary;
 }
 
+std::vector<SweepRunResult> read_sweep_results(const std::string& dir, const SweepPlan& plan) {
+    std::vector<SweepRunResult> results;
+    for (std::size_t r = 0; r < plan.ids.size(); ++r) {
+        SweepRunResult x;
+        x.id = plan.ids[r];
+        x.values = plan.values[r];
+        const fs::path folder = fs::path(dir) / "runs" / x.id;
+        std::ifstream in(folder / "run.json");
+        const auto j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+        x.finished = j.is_object() && j.value("status", "running") != "running" && j.contains("peak");
+        if (x.finished) {
+            x.peak_load = j["peak"].value("load", NAN);
+            const Curve c = read_run_curve((folder / "curve.csv").string());
+            x.displacement = c.displacement;
+            x.load = c.load;
+        }
+        results.push_back(std::move(x));
+    }
+    return results;
+}
+
 } // namespace plastica

@@ -52,4 +52,15 @@ struct SweepSummary {
 // at the given displacements, iterations, steps and seconds; missing runs listed as such.
 SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& at);
 
+// What the charts of a sweep need: per run its values, whether it gave a result, its peak load
+// and its load–displacement curve.
+struct SweepRunResult {
+    std::string id;
+    std::vector<std::string> values;
+    bool finished = false;
+    double peak_load = 0.0;
+    std::vector<double> displacement, load;
+};
+std::vector<SweepRunResult> read_sweep_results(const std::string& dir, const SweepPlan& plan);
+
 } // namespace plastica

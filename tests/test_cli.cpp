@@ -274,6 +274,9 @@ TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes,
         for (std::string l; std::getline(in, l);) lines.push_back(l);
         return lines;
     };
+    // The charts of the finished runs: the curve family and the peak against each key.
+    for (const char* chart : {"curves.png", "peak_1.png", "peak_2.png"}) CHECK(fs::file_size(dir / "pool" / chart) > 20000);
+    CHECK_FALSE(fs::exists(dir / "pool" / "peak_distribution.png")); // a grid, not a sample
     const std::vector<std::string> pool = rows(dir / "pool" / "sweep.csv");
     REQUIRE(pool.size() == 4u);
     CHECK(pool[0] == "id,analysis.target_displacement,material[steel].fy,status,reason,peak_load,peak_displacement,load_at_10,load_at_20,iterations,steps,seconds");
@@ -300,6 +303,26 @@ TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes,
         CHECK(a == b);
     }
     CHECK_THAT(jobs[2], Catch::StartsWith("r0002,20,-1,failed,") && Catch::Contains("--set material[steel].fy"));
+}
+
+TEST_CASE("A sampled sweep draws the distribution of its peak load", "[cli][sweep]") {
+    const fs::path dir = scratch("sample");
+    const Result s = plastica("sweep " + model("ring_inelastic.toml") + " --sample material[steel].fy=uniform:30000:40000" +
+                              " --samples 6 --seed 5 -o " + dir.string());
+    CHECK(s.code == 0);
+    CHECK(fs::exists(dir / "sample.txt"));
+    CHECK(fs::file_size(dir / "peak_distribution.png") > 20000);
+    // The plan is the seed's: the same values again.
+    std::ifstream plan(dir / "plan.csv");
+    std::stringstream first;
+    first << plan.rdbuf();
+    const fs::path again = scratch("sample_again");
+    CHECK(plastica("sweep " + model("ring_inelastic.toml") + " --sample material[steel].fy=uniform:30000:40000" +
+                   " --samples 6 --seed 5 --emit jobs -o " + again.string()).code == 0);
+    std::ifstream plan2(again / "plan.csv");
+    std::stringstream second;
+    second << plan2.rdbuf();
+    CHECK(first.str() == second.str());
 }
 
 TEST_CASE("A series that would fill a disk is refused before the run, with the way out", "[cli]") {
