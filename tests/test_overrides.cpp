@@ -3,6 +3,11 @@
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
 
+#include "analysis/path_following.hpp"
+
+#include <fstream>
+#include <sstream>
+
 #include <catch2/catch.hpp>
 
 using namespace plastica;
@@ -53,4 +58,30 @@ TEST_CASE("A bad override is named in its error", "[scene][overrides]") {
     CHECK(error_of({"material.fy=2"}) == "--set material.fy: 'material' is not a table (a list: name one, e.g. material[1])");
     // A value the key does not accept.
     CHECK_THAT(error_of({"section[ring].plasticity=zones"}), Catch::Contains("--set section[ring].plasticity: expected one of"));
+}
+
+TEST_CASE("A run with --set equals the run of the edited file to the last digit", "[scene][overrides]") {
+    std::ifstream in(ring());
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string edited = text.str();
+    auto edit = [&](const std::string& from, const std::string& to) {
+        REQUIRE(edited.find(from) != std::string::npos);
+        edited.replace(edited.find(from), from.size(), to);
+    };
+    edit("fy = 36518.0", "fy = 30000.0");
+    edit("elements = 50", "elements = 30");
+    edit("ky = 1200.0", "ky = 900.0");
+    edit("target_displacement = 100.0", "target_displacement = 40.0");
+    auto loads = [](const Model& m) {
+        std::vector<double> out;
+        PathFollowing analysis(m);
+        analysis.run({[&](const StepResult& r) { out.push_back(r.load); }});
+        return out;
+    };
+    const std::vector<double> from_file = loads(read_scene_text(edited, "edited.toml"));
+    const std::vector<double> from_set = loads(with({"material[steel].fy=30000.0", "arc[ring].elements=30",
+                                                    "foundation[1].ky=900.0", "analysis.target_displacement=40.0"}));
+    REQUIRE(from_file.size() > 50u);
+    CHECK(from_file == from_set);
 }
