@@ -5,7 +5,7 @@ JOBS       ?= $(shell nproc)
 SCENE      ?= models/ring_inelastic.toml
 CMAKE_ARGS ?=
 
-.PHONY: run test deps build bench test-sanitize fuzz update-snapshots clean
+.PHONY: run test deps build bench test-sanitize test-slurm fuzz update-snapshots clean
 
 deps:
 	@./scripts/install-deps.sh
@@ -33,6 +33,12 @@ test-sanitize: deps
 	cmake --build build-sanitize -j $(JOBS)
 	cd build-sanitize && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 	  ctest --output-on-failure -j $(JOBS)
+
+# A one-node Slurm on this host runs the ring's 3 × 3 sweep as a job array; its sweep.csv must
+# equal the in-process one (scripts/test-slurm.sh). Installs slurm-wlm and munge when missing.
+test-slurm: build
+	@./scripts/install-deps.sh slurm-wlm munge bc
+	scripts/test-slurm.sh $(BUILD)/cli/plastica .
 
 bench: deps
 	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DPLASTICA_BENCH=ON -DPLASTICA_TESTS=OFF
