@@ -87,14 +87,21 @@ void draw_charts(const std::string& dir, const std::string& scene_file, bool sam
     render::SweepCharts charts;
     charts.keys = plan.keys;
     charts.sampled = sampled;
-    charts.scene = fs::path(dir).parent_path().filename().string();
-    if (!scene_file.empty()) {
-        const Model model = read_scene(scene_file);
+    const std::vector<SweepRunResult> results = read_sweep_results(dir, plan);
+    // Names and labels from the scene (given, or as the runs recorded it).
+    std::string file = scene_file;
+    for (const SweepRunResult& r : results)
+        if (file.empty() && r.finished) file = r.scene_file;
+    charts.scene = "sweep";
+    try {
+        const Model model = read_scene(file);
         charts.scene = model.name;
         charts.load_label = model.report.load_label;
         charts.displacement_label = model.report.displacement_label;
+    } catch (const SceneError&) {
+        // The scene moved or changed: the charts keep generic labels.
     }
-    for (const SweepRunResult& r : read_sweep_results(dir, plan)) {
+    for (const SweepRunResult& r : results) {
         if (!r.finished || r.displacement.size() < 2) continue;
         render::SweepChartRun run;
         for (const std::string& v : r.values) {

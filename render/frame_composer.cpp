@@ -139,9 +139,21 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
         if (f.axes_through_zero) {
             all_x.push_back(0.0);
             all_y.push_back(0.0);
+            padded_range(all_x, x0, x1);
+            padded_range(all_y, y0, y1);
+        } else {
+            // The data's own span, 5 % of room on either side (a scatter far from the origin).
+            auto tight = [](const std::vector<double>& v, double& lo, double& hi) {
+                lo = INFINITY, hi = -INFINITY;
+                for (double x : v)
+                    if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+                if (!(hi >= lo)) lo = 0, hi = 1;
+                const double pad = 0.05 * (hi > lo ? hi - lo : std::max(std::abs(hi), 1.0));
+                lo -= pad, hi += pad;
+            };
+            tight(all_x, x0, x1);
+            tight(all_y, y0, y1);
         }
-        padded_range(all_x, x0, x1);
-        padded_range(all_y, y0, y1);
     }
     chart.set_ranges(x0, x1, y0, y1);
     chart.show_legend(f.legend);

@@ -324,6 +324,7 @@ std::vector<SweepRunResult> read_sweep_results(const std::string& dir, const Swe
         const auto j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
         x.finished = j.is_object() && j.value("status", "running") != "running" && j.contains("peak");
         if (x.finished) {
+            x.scene_file = j.value("scene_file", "");
             x.peak_load = j["peak"].value("load", NAN);
             const Curve c = read_run_curve((folder / "curve.csv").string());
             x.displacement = c.displacement;

@@ -58,6 +58,7 @@ struct SweepRunResult {
     std::string id;
     std::vector<std::string> values;
     bool finished = false;
+    std::string scene_file; // as run.json records it
     double peak_load = 0.0;
     std::vector<double> displacement, load;
 };
