@@ -74,5 +74,6 @@ void ring_analysis(benchmark::State& state, const char* scene) {
 }
 BENCHMARK_CAPTURE(ring_analysis, elastic, "ring_elastic")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(ring_analysis, inelastic, "ring_inelastic")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(ring_analysis, distributed, "ring_distributed")->Unit(benchmark::kMillisecond);
 
 } // namespace plastica::bench
