@@ -33,6 +33,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
                              const IterationHook& hook) {
     NewtonResult result;
     double last_correction = 0.0;
+    double previous_correction = 0.0;
     double damping = 1.0;
     std::vector<double> history; // residual norms of the iterations so far
     bool release = false; // re-decide frozen active sets at the next evaluation
@@ -68,12 +69,27 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             // between two states that far apart without ever settling, and a tiny last
             // increment that lands on a target has no other scale.
             const double floor = 1e-9 * problem.state_norm();
-            const bool small_correction = last_correction <= settings.displacement_tolerance * result.increment.norm() ||
+            // The error left in the state is the next correction, estimated from the last two as
+            // c_k²/c_{k−1} (exact for linear convergence, an overestimate for quadratic): where a
+            // nearly singular tangent turns round-off into corrections, the next one is never
+            // computed cleanly, but the contraction that led to the round-off floor still shows.
+            const double remaining = previous_correction > 0.0
+                                         ? last_correction * std::min(1.0, last_correction / previous_correction)
+                                         : last_correction;
+            const bool small_correction = remaining <= settings.displacement_tolerance * result.increment.norm() ||
                                           last_correction <= floor;
             const bool settled = problem.settled();
             // Equilibrium with frozen active sets that the state contradicts: let them be
             // re-decided once, then freeze again (an active-set iteration).
             release = !settled && relative <= settings.residual_tolerance * settings.stagnation_factor;
+            // Below the tolerance and no longer falling: round-off, which a nearly singular tangent
+            // (near a bifurcation, a membrane far stiffer than its bending) turns into corrections
+            // as large as a tiny increment, so they would never pass the correction test.
+            const bool floor_reached = it > 1 && relative <= settings.residual_tolerance && relative > 0.5 * previous_relative;
+            if (floor_reached && settled && !small_correction) {
+                result.rule = Acceptance::stagnation;
+                return result;
+            }
             if (small_correction && settled) {
                 if (relative <= settings.residual_tolerance) {
                     result.rule = Acceptance::residual;
@@ -134,6 +150,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         }
         result.increment += du;
         result.load_change += step_dl;
+        previous_correction = last_correction;
         last_correction = du.norm();
     }
     result.failure = problem.settled() ? NewtonFailure::iteration_limit : NewtonFailure::unsettled;
