@@ -27,6 +27,7 @@ namespace {
 
 struct Material {
     double E = 0.0;
+    double density = 0.0; // mass per unit volume, for self weight
     std::optional<SteelSpec> steel;
 };
 
@@ -97,14 +98,15 @@ public:
         check_nodes(top);
         read_supports(top);
         read_loads(top);
+        read_distributed_loads(top);
         read_prescribed(top);
         read_foundations(top);
         read_analysis(top);
         read_report(top);
         top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
-                    "load", "prescribed", "foundation", "analysis", "report"});
-        if (model_.loads.empty() && model_.prescribed.empty())
-            throw SceneError(file_, 1, "load", "the scene has no [[load]] and no [[prescribed]] displacement");
+                    "load", "distributed_load", "prescribed", "foundation", "analysis", "report"});
+        if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty())
+            throw SceneError(file_, 1, "load", "the scene has no [[load]], no [[distributed_load]] and no [[prescribed]] displacement");
         return std::move(model_);
     }
 
@@ -148,6 +150,8 @@ private:
             if (materials_.count(name)) r.fail("name", "a material named '" + name + "' exists already");
             Material m;
             m.E = r.positive("E");
+            m.density = r.number_or("density", 0.0);
+            if (m.density < 0.0) r.fail("density", "expected a density of at least 0");
             if (r.has("fy")) {
                 SteelSpec s;
                 s.E = m.E;
@@ -157,7 +161,7 @@ private:
                     r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
                 m.steel = s;
             }
-            r.finish({"name", "E", "fy", "ultimate_strain"});
+            r.finish({"name", "E", "fy", "ultimate_strain", "density"});
             materials_[name] = m;
         }
     }
@@ -255,6 +259,7 @@ private:
             if (s.plasticity != Plasticity::none) s.steel = m->second.steel;
             else s.fibres.clear();
             s.name = name;
+            s.mass_per_length = m->second.density * s.area;
             r.finish({"name", "material", "shape", "A", "I", "b", "h", "fibres", "depth", "flange_width",
                       "flange_thickness", "web_thickness", "flange_strips", "flange_layers", "web_fibres",
                       "residual_stress", "diameter", "thickness", "plasticity", "integration_points"});
@@ -332,6 +337,7 @@ private:
                 const double t = static_cast<double>(k) / n;
                 const int next = add_node(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]));
                 add_element(prev, next, section, r, "elements");
+                member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
                 nodes.push_back(next);
                 prev = next;
             }
@@ -364,6 +370,7 @@ private:
             for (int k = 1; k <= n; ++k) {
                 const int next = at(k); // a full circle closes on its first node
                 add_element(prev, next, section, r, "elements");
+                member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
                 if (next != nodes.front()) nodes.push_back(next);
                 prev = next;
             }
@@ -464,6 +471,55 @@ private:
             if (!moves) r.fail("", "the load acts only on supported DOFs of the node at " + describe_node(l.node) + ": it moves nothing");
             r.finish({"node", "at", "fx", "fy", "moment"});
             model_.loads.push_back(l);
+        }
+    }
+
+    // Line loads per unit initial length in a fixed direction (and self weight, ρA·g) are lumped
+    // half to each end of every element; pressure follows the deformed members (FollowerPressure).
+    void read_distributed_loads(TomlTableReader& top) {
+        nodal_loads_ = static_cast<int>(model_.loads.size());
+        const Tables list = array_of_tables(top, "distributed_load");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("distributed_load", i));
+            const std::string on = r.string("on");
+            std::vector<int> elements;
+            if (on == "all") {
+                for (std::size_t e = 0; e < model_.elements.size(); ++e) elements.push_back(static_cast<int>(e));
+            } else {
+                auto g = member_elements_.find(on);
+                if (g == member_elements_.end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
+                elements = g->second;
+            }
+            const double wx = r.number_or("wx", 0.0), wy = r.number_or("wy", 0.0);
+            const double pressure = r.number_or("pressure", 0.0);
+            std::array<double, 2> gravity{0.0, 0.0};
+            if (r.has("gravity")) {
+                gravity = r.point("gravity");
+                for (int e : elements)
+                    if (model_.sections[model_.elements[e].section].mass_per_length <= 0.0)
+                        r.fail("gravity", "self weight needs the material's 'density' (section '" +
+                                              model_.sections[model_.elements[e].section].name + "' has none)");
+            }
+            if (wx == 0.0 && wy == 0.0 && pressure == 0.0 && gravity[0] == 0.0 && gravity[1] == 0.0)
+                r.fail("", "a distributed load needs a non-zero 'wx', 'wy', 'pressure' or 'gravity'");
+            bool moves = false;
+            std::map<int, std::array<double, 2>> lumped;
+            for (int e : elements) {
+                const ElementSpec& el = model_.elements[e];
+                const Node &a = model_.nodes[el.node_i], &b = model_.nodes[el.node_j];
+                const double half = 0.5 * std::hypot(b.x - a.x, b.y - a.y);
+                const double m = model_.sections[el.section].mass_per_length;
+                for (int node : {el.node_i, el.node_j}) {
+                    lumped[node][0] += half * (wx + m * gravity[0]);
+                    lumped[node][1] += half * (wy + m * gravity[1]);
+                    moves = moves || !supported(node, 0) || !supported(node, 1);
+                }
+                if (pressure != 0.0) model_.pressures.push_back({e, pressure});
+            }
+            if (!moves) r.fail("on", "every node of '" + on + "' is held: the load moves nothing");
+            for (const auto& [node, f] : lumped)
+                if (f[0] != 0.0 || f[1] != 0.0) model_.loads.push_back({node, {f[0], f[1], 0.0}});
+            r.finish({"on", "wx", "wy", "pressure", "gravity"});
         }
     }
 
@@ -636,9 +692,11 @@ private:
             }
         } else if (a.scheme == Scheme::displacement_control || a.target_displacement) {
             r.fail("", "missing 'control_at' (the point whose displacement controls or stops the analysis)");
-        } else if (!model_.loads.empty()) {
+        } else if (nodal_loads_ > 0) {
             a.control.node = model_.loads.front().node; // report the first load's point
             a.control.dof = 1;
+        } else if (model_.prescribed.empty() && (!model_.loads.empty() || !model_.pressures.empty())) {
+            r.fail("", "missing 'control_at': a scene loaded only by [[distributed_load]]s names the point whose displacement it reports");
         }
         if (!a.target_load_factor && !a.target_displacement)
             r.fail("", "missing a stop: 'target_load_factor' or 'target_displacement'");
@@ -671,6 +729,8 @@ private:
         if (!parallel) {
             model_.report.measure = ReportSpec::Measure::factor;
             model_.report.load_label = "load factor";
+        } else if (model_.uniform_pressure_only()) {
+            model_.report.load_label = "pressure";
         }
         if (!t) return;
         TomlTableReader r(*t, file_, "report");
@@ -703,7 +763,7 @@ private:
 
     bool is_cantilever_with_tip_load() const {
         const Model& m = model_;
-        if (m.inelastic() || !m.springs.empty() || !m.prescribed.empty() || m.supports.size() != 1 || m.loads.size() != 1)
+        if (m.inelastic() || !m.springs.empty() || !m.prescribed.empty() || !m.pressures.empty() || m.supports.size() != 1 || m.loads.size() != 1)
             return false;
         const Support& s = m.supports.front();
         if (!(s.fixed[0] && s.fixed[1] && s.fixed[2])) return false;
@@ -733,7 +793,9 @@ private:
     std::map<std::string, int> section_index_;
     NodeIndex node_index_;
     std::map<int, int> node_ids_;
-    std::map<std::string, std::vector<int>> groups_;
+    std::map<std::string, std::vector<int>> groups_;          // nodes of each [[line]]/[[arc]]
+    std::map<std::string, std::vector<int>> member_elements_; // elements of each [[line]]/[[arc]]
+    int nodal_loads_ = 0;                                     // [[load]]s, ahead of the lumped ones
     std::set<std::pair<int, int>> members_; // node pairs with an element
     double size_scale_ = 0.0;
 };

@@ -136,6 +136,11 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"mirror through the middle", good + "[report]\nmirror_x = 0.5\n", "the structure lies on both sides of this line", 27},
         {"exact form of another scene", good.substr(0, good.find("[[load]]")) + "[[load]]\nat = [1.0, 0.0]\nfx = 1.0\n" + good.substr(good.find("[analysis]")) + "[report]\nexact = \"cantilever_tip_load\"\n", "this scene is not one", 27},
         {"key of another shape", replaced("A = 1.0", "A = 1.0\ndiameter = 0.2"), "'section[1].diameter': a key of shape = \"hollow_circle\", not of shape = \"properties\"", 10},
+        {"line load on an unknown member", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"beam\"\nwy = -1.0"), "'distributed_load[1].on': expected 'all' or the name of a [[line]] or [[arc]], got 'beam'", 20},
+        {"self weight without density", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"all\"\ngravity = [0.0, -9.81]"), "self weight needs the material's 'density' (section 's' has none)", 21},
+        {"zero line load", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"all\"\nwy = 0.0"), "a distributed load needs a non-zero 'wx', 'wy', 'pressure' or 'gravity'", 19},
+        {"negative density", replaced("E = 1000.0", "E = 1000.0\ndensity = -1.0"), "'material[1].density': expected a density of at least 0", 6},
+        {"line load without a control point", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"all\"\nwy = -1.0"), "missing 'control_at': a scene loaded only by [[distributed_load]]s", 22},
         {"a table nothing reads", good + "[render]\nfield = \"gap\"\n", "'render': unknown key", 26},
     };
     for (const Case& c : cases) {

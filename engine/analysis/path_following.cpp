@@ -11,13 +11,19 @@
 
 namespace plastica {
 
-PathFollowing::PathFollowing(const Model& model) : model_(model), system_(model) {
+namespace {
+Eigen::VectorXd nodal_loads(const Model& model) {
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(model.dof_count());
+    for (const NodalLoad& l : model.loads)
+        for (int d = 0; d < dofs_per_node; ++d) force[dofs_per_node * l.node + d] += l.value[d];
+    return force;
+}
+} // namespace
+
+PathFollowing::PathFollowing(const Model& model) : model_(model), system_(model, nodal_loads(model)) {
     const int n = model.dof_count();
     u_ = Eigen::VectorXd::Zero(n);
-    force_ = Eigen::VectorXd::Zero(n);
     ubar_ = Eigen::VectorXd::Zero(n);
-    for (const NodalLoad& l : model.loads)
-        for (int d = 0; d < dofs_per_node; ++d) force_[dofs_per_node * l.node + d] += l.value[d];
     for (const PrescribedDisplacement& p : model.prescribed)
         ubar_[dofs_per_node * p.node + p.dof] = p.value;
     const DofRef& c = model.analysis.control;
@@ -40,13 +46,13 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
-    system_.report(u_, lambda_ * force_, r);
+    system_.report(u_, lambda_ * system_.load(), r);
     return r;
 }
 
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control) {
     const AnalysisSpec& a = model_.analysis;
-    StructureProblem problem(system_, u_, lambda_, force_, ubar_, control.freeze_active_after,
+    StructureProblem problem(system_, u_, lambda_, ubar_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
     NewtonSettings settings;
     settings.max_iterations = a.max_iterations;
@@ -82,7 +88,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
 
 std::string PathFollowing::initial_mechanism() {
     if (system_.free_count() == 0) return {};
-    system_.evaluate(u_, ubar_, false);
+    system_.evaluate(u_, ubar_, lambda_, false);
     const bool ok = solver_.factorize(system_.tangent());
     system_.revert();
     if (ok && solver_.pivot_ratio() > 1e-12) return {};
@@ -108,10 +114,10 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
     };
 
     // Step 0: the unloaded state (springs evaluated so the contact set is known).
-    system_.evaluate(u_, ubar_, false);
+    system_.evaluate(u_, ubar_, lambda_, false);
     system_.commit();
     if (system_.free_count() > 0 && solver_.factorize(system_.tangent())) {
-        const Eigen::VectorXd f = system_.gather(force_) - system_.coupling();
+        const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
         initial_flexibility_ = f.dot(solver_.solve(f));
     }
     publish(make_result(0, 0, Acceptance::none));
@@ -162,7 +168,7 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
             if (!giving_up) continue;
             summary.status = RunStatus::no_convergence;
             std::ostringstream why;
-            system_.evaluate(u_, ubar_, false); // leave the system at the last converged state
+            system_.evaluate(u_, ubar_, lambda_, false); // leave the system at the last converged state
             if (outcome.failure == NewtonFailure::non_finite) {
                 summary.status = RunStatus::non_finite;
                 why << "non-finite state in step " << step_ + 1;
@@ -247,7 +253,7 @@ bool PathFollowing::tangent_shows_limit() {
         limit_evidence_ = std::to_string(solver_.negative_pivots()) + " negative pivot(s)";
         return true;
     }
-    const Eigen::VectorXd f = system_.gather(force_) - system_.coupling();
+    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
     const double flexibility = f.dot(solver_.solve(f));
     if (initial_flexibility_ > 0.0 && flexibility > 0.0) {
         const double stiffness = initial_flexibility_ / flexibility;

@@ -67,7 +67,6 @@ private:
     StructuralSystem system_;
     LinearSolver solver_;
     Eigen::VectorXd u_;     // full displacement vector
-    Eigen::VectorXd force_; // reference loads, full
     Eigen::VectorXd ubar_;  // reference prescribed displacements, full
     Eigen::VectorXd previous_increment_; // free DOFs, last converged Δu
     double lambda_ = 0.0;

@@ -51,8 +51,9 @@ std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, std::array<b
 
 } // namespace
 
-StructuralSystem::StructuralSystem(const Model& model)
-    : element_specs_(model.elements), nodes_(model.nodes), foundation_(model),
+StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fixed_load)
+    : element_specs_(model.elements), nodes_(model.nodes), foundation_(model), pressure_(model),
+      fixed_load_(fixed_load), load_(fixed_load),
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
     // One plastic hinge per node where exactly two inelastic elements meet: the first
@@ -78,7 +79,7 @@ StructuralSystem::StructuralSystem(const Model& model)
     coupling_ = Eigen::VectorXd::Zero(free_count_);
 }
 
-bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar,
+bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, double load_factor,
                                 bool freeze_active, bool freeze_hinges, bool freeze_fibres) {
     internal_.setZero();
     coupling_.setZero();
@@ -95,6 +96,7 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         for (int a = 0; a < 6; ++a) d[a] = u[dofs[a]];
         elements_[e].freeze_states(distributed_[e] ? freeze_fibres : freeze_hinges);
         elements_[e].compute(d, f, &k);
+        if (!pressure_.empty() && pressure_.pressure(e) != 0.0) k += pressure_.stiffness(e, load_factor);
         if (!f.allFinite() || !k.allFinite()) {
             non_finite_where_ = "element " + std::to_string(e + 1) + " (nodes " +
                                 std::to_string(spec.node_i + 1) + "–" +
@@ -110,6 +112,10 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
                     coupling_[row] += k(a, b) * ubar[dofs[b]];
         }
         assembler_.add(e, k);
+    }
+    if (!pressure_.empty()) {
+        load_ = fixed_load_;
+        pressure_.add_forces(u, load_);
     }
     foundation_.evaluate(u, freeze_active);
     for (std::size_t s = 0; s < foundation_.size(); ++s) {

@@ -6,6 +6,7 @@
 #include "analysis/step_result.hpp"
 #include "contact/foundation.hpp"
 #include "element/corotational_beam.hpp"
+#include "load/follower_pressure.hpp"
 #include "model/model.hpp"
 #include "solver/block_assembler.hpp"
 
@@ -17,20 +18,24 @@ namespace plastica {
 
 class StructuralSystem {
 public:
-    explicit StructuralSystem(const Model& model);
+    // fixed_load: the reference nodal loads (full DOF vector), which do not follow the structure.
+    StructuralSystem(const Model& model, const Eigen::VectorXd& fixed_load);
 
     int dof_count() const { return static_cast<int>(equation_.size()); }
     int free_count() const { return free_count_; }
     // Equation number of a DOF, or −1 when it is supported or prescribed.
     int equation(int dof) const { return equation_[dof]; }
 
-    // Evaluates at the full displacement vector u; ubar is the prescribed-displacement
-    // direction. Returns false (and names the element) when a force is not finite.
-    bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, bool freeze_active,
+    // Evaluates at the full displacement vector u and load factor λ (which scales the load
+    // stiffness of follower pressure); ubar is the prescribed-displacement direction. Returns
+    // false (and names the element) when a force is not finite.
+    bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, double load_factor, bool freeze_active,
                   bool freeze_hinges = false, bool freeze_fibres = false);
 
     const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū, free DOFs
+    // Reference loads at the evaluated state, per unit λ: the fixed ones plus follower pressure.
+    const Eigen::VectorXd& load() const { return load_; }
     const SparseMatrix& tangent() const { return assembler_.matrix(); }
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
@@ -54,6 +59,9 @@ private:
     std::vector<CorotationalBeam> elements_;
     std::vector<bool> distributed_; // per element: fibre sections along it (else hinges or elastic)
     Foundation foundation_;
+    FollowerPressure pressure_;
+    Eigen::VectorXd fixed_load_;
+    Eigen::VectorXd load_;
     int free_count_ = 0;
     std::vector<int> equation_;
     BlockAssembler assembler_;

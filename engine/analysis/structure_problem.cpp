@@ -3,10 +3,9 @@
 namespace plastica {
 
 StructureProblem::StructureProblem(StructuralSystem& system, Eigen::VectorXd& u, double& lambda,
-                                   const Eigen::VectorXd& force, const Eigen::VectorXd& ubar,
+                                   const Eigen::VectorXd& ubar,
                                    int contact_freeze, int hinge_freeze, int fibre_freeze)
-    : system_(system), u_(u), lambda_(lambda), ubar_(ubar), force_free_(system.gather(force)),
-      u_free_(system.gather(u)), contact_freeze_(contact_freeze), hinge_freeze_(hinge_freeze),
+    : system_(system), u_(u), lambda_(lambda), ubar_(ubar), u_free_(system.gather(u)), contact_freeze_(contact_freeze), hinge_freeze_(hinge_freeze),
       fibre_freeze_(fibre_freeze) {
     for (int dof = 0; dof < ubar.size(); ++dof)
         if (ubar[dof] != 0.0 && system.equation(dof) < 0) prescribed_.push_back(dof);
@@ -16,9 +15,10 @@ bool StructureProblem::evaluate(int iteration, bool release) {
     const bool contact_frozen = iteration >= contact_freeze_ && !release;
     const bool hinges_frozen = iteration >= hinge_freeze_ && !release;
     const bool fibres_frozen = iteration >= fibre_freeze_ && !release;
-    if (!system_.evaluate(u_, ubar_, contact_frozen, hinges_frozen, fibres_frozen)) return false;
-    load_direction_ = force_free_ - system_.coupling();
-    residual_ = lambda_ * force_free_ - system_.gather(system_.internal_force());
+    if (!system_.evaluate(u_, ubar_, lambda_, contact_frozen, hinges_frozen, fibres_frozen)) return false;
+    const Eigen::VectorXd load = system_.gather(system_.load());
+    load_direction_ = load - system_.coupling();
+    residual_ = lambda_ * load - system_.gather(system_.internal_force());
     return true;
 }
 

@@ -9,12 +9,12 @@ namespace plastica {
 
 class StructureProblem final : public NewtonProblem {
 public:
-    // u (full DOF vector) and lambda are the state, moved in place; force and ubar are the
-    // reference loads and prescribed displacements (full).
+    // u (full DOF vector) and lambda are the state, moved in place; ubar is the reference
+    // prescribed displacement (full); the reference loads are the system's (they may follow u).
     // Contact sets are frozen from iteration `contact_freeze`, hinge states from `hinge_freeze`,
     // fibre branches of distributed plasticity from `fibre_freeze`.
     StructureProblem(StructuralSystem& system, Eigen::VectorXd& u, double& lambda,
-                     const Eigen::VectorXd& force, const Eigen::VectorXd& ubar,
+                     const Eigen::VectorXd& ubar,
                      int contact_freeze, int hinge_freeze, int fibre_freeze);
 
     bool evaluate(int iteration, bool release) override;
@@ -31,7 +31,6 @@ private:
     Eigen::VectorXd& u_;
     double& lambda_;
     const Eigen::VectorXd& ubar_;
-    Eigen::VectorXd force_free_;
     Eigen::VectorXd u_free_;
     Eigen::VectorXd residual_;
     Eigen::VectorXd load_direction_;

@@ -42,7 +42,15 @@ std::array<double, 3> first_direction(const std::vector<NodalLoad>& loads) {
 }
 } // namespace
 
+bool Model::uniform_pressure_only() const {
+    if (pressures.empty() || !loads.empty()) return false;
+    for (const ElementPressure& p : pressures)
+        if (p.value != pressures.front().value) return false;
+    return true;
+}
+
 bool Model::loads_parallel() const {
+    if (!pressures.empty()) return uniform_pressure_only(); // a pressure has no one direction
     const std::array<double, 3> d = first_direction(loads);
     for (const NodalLoad& l : loads) {
         // Parallel to d: no component across it (a force with a moment is not parallel to a force).
@@ -55,7 +63,9 @@ bool Model::loads_parallel() const {
 }
 
 double Model::load_per_factor() const {
-    if (report.measure == ReportSpec::Measure::factor || loads.empty()) return report.load_scale;
+    if (report.measure == ReportSpec::Measure::factor) return report.load_scale;
+    if (uniform_pressure_only()) return report.load_scale * std::abs(pressures.front().value);
+    if (loads.empty()) return report.load_scale;
     const std::array<double, 3> d = first_direction(loads);
     double total = 0.0;
     for (const NodalLoad& l : loads) total += l.value[0] * d[0] + l.value[1] * d[1] + l.value[2] * d[2];

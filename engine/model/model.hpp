@@ -50,6 +50,7 @@ struct SectionSpec {
     std::vector<Fibre> fibres;      // filled when steel is present
     Plasticity plasticity = Plasticity::none; // hinges or distributed when steel is present
     int integration_points = 0;     // distributed: Gauss–Legendre points per element
+    double mass_per_length = 0.0;   // density × area, for self weight
 };
 
 struct ElementSpec {
@@ -66,6 +67,13 @@ struct Support {
 struct NodalLoad {
     int node = 0;
     std::array<double, dofs_per_node> value{0.0, 0.0, 0.0}; // fx, fy, moment; scaled by λ
+};
+
+// Pressure on an element, per unit current length, normal to its deformed chord (a follower
+// load): positive along the element's left normal (node i to node j), scaled by λ.
+struct ElementPressure {
+    int element = 0;
+    double value = 0.0;
 };
 
 struct PrescribedDisplacement {
@@ -137,7 +145,8 @@ struct Model {
     std::vector<SectionSpec> sections;
     std::vector<ElementSpec> elements;
     std::vector<Support> supports;
-    std::vector<NodalLoad> loads;
+    std::vector<NodalLoad> loads; // nodal loads, line loads and self weight lumped to nodes
+    std::vector<ElementPressure> pressures;
     std::vector<PrescribedDisplacement> prescribed;
     std::vector<FoundationSpring> springs;
     std::optional<BaseLine> base; // required when any spring is unilateral
@@ -151,6 +160,8 @@ struct Model {
     bool has_unilateral_base() const;
     // Whether the reference loads have one direction (parallel forces, or moments only).
     bool loads_parallel() const;
+    // Whether the only load is one pressure, equal on every loaded element (it is then reported).
+    bool uniform_pressure_only() const;
     // The reported load per unit load factor (ReportSpec::measure, load_scale included).
     double load_per_factor() const;
 };
