@@ -160,6 +160,15 @@ std::vector<StabilityCase> robustness_cases() {
                                     ? "" : "soil reaction " + std::to_string(r.base_reaction) + " against " +
                                                std::to_string(0.5 * r.load);
                      }});
+    cases.push_back({"Lee's frame, arc length", "through the limit and the snap-back", embedded_scene("gallery/lee_frame"),
+                     done, [](const Steps& steps, const RunSummary&) -> std::string {
+                         // The limit load 18.5 EI/L² (1.8659 for this 10 + 10 mesh), then the load
+                         // falls through zero and rises again.
+                         double peak = 0.0, lowest = 0.0;
+                         for (const StepResult& r : steps) peak = std::max(peak, r.load), lowest = std::min(lowest, r.load);
+                         if (std::abs(peak - 1.8659) > 0.005 * 1.8659) return "peak " + std::to_string(peak) + ", expected 1.866";
+                         return lowest < -0.5 * peak ? "" : "the load never fell through zero";
+                     }});
     // Follower pressure past buckling until the top and bottom meet; the elastica gives
     // pR³/EI = 5.247 there (load factor 1.749), which a 64-gon overestimates by 0.4 %.
     for (int elements : {64, 200}) {
