@@ -117,7 +117,7 @@ int run_command(const Args& args) {
     write_run_started((std::filesystem::path(folder) / "run.json").string(), model, scene_file);
 
     namespace fs = std::filesystem;
-    CurveWriter curve((fs::path(folder) / "curve.csv").string());
+    CurveWriter curve((fs::path(folder) / "curve.csv").string(), model);
     const bool curves_only = vm.count("curves-only") > 0;
     std::optional<VtuSeriesWriter> series;
     if (!curves_only)

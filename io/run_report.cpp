@@ -1,6 +1,7 @@
 #include "run_report.hpp"
 
 #include "atomic_file.hpp"
+#include "analysis/support_reactions.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -48,6 +49,20 @@ std::string to_json(const RunReport& r) {
     j["final"] = {{"load_factor", r.last.load_factor}, {"load", r.last.load},
                   {"control_displacement", r.last.control_displacement},
                   {"contact_count", r.last.contact_count}, {"hinge_count", r.last.hinge_count}};
+    // The supports' reactions at the last step: the force each exerts on the structure, along
+    // the DOFs it fixes.
+    if (!r.model->supports.empty() && !r.last.reaction.empty()) {
+        const char* const names[dofs_per_node] = {"fx", "fy", "mz"};
+        Json reactions = Json::array();
+        for (const SupportReaction& s : support_reactions(*r.model, r.last)) {
+            const Node& n = r.model->nodes[s.node];
+            Json one = {{"support", s.support + 1}, {"at", {n.x, n.y}}};
+            for (int d = 0; d < dofs_per_node; ++d)
+                if (s.reported[d]) one[names[d]] = s.force[d];
+            reactions.push_back(one);
+        }
+        j["final"]["reactions"] = reactions;
+    }
     j["peak"] = {{"load", r.peak_load}, {"control_displacement", r.peak_load_displacement}};
     Json seconds = Json::object();
     for (const auto& [stage, s] : r.stage_seconds) seconds[stage] = s;

@@ -83,6 +83,9 @@ struct VtuSeriesWriter::Impl {
 
 std::vector<std::string> VtuSeriesWriter::point_arrays(const Model& m) {
     std::vector<std::string> names{"displacement", "rotation", "initial_position", "bending_moment"};
+    if (!m.supports.empty() || !m.prescribed.empty()) names.push_back("reaction");
+    if (!m.supports.empty()) names.push_back("support");
+    if (!m.loads.empty() || !m.pressures.empty()) names.push_back("applied_load");
     if (has_bilateral(m)) names.push_back("spring_force");
     if (m.has_unilateral_base()) {
         names.push_back("contact_force");
@@ -207,6 +210,30 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     cd->AddArray(mj);
     cd->AddArray(shear);
 
+    // What holds and what pushes: reactions at supported and prescribed DOFs (the force on the
+    // structure), which DOFs each node's support fixes (bits 1 ux, 2 uy, 4 rz), and the applied
+    // load λF (with pressure as it follows the members).
+    if (!m.supports.empty() || !m.prescribed.empty()) {
+        auto reaction = make_array("reaction", 3, n);
+        for (vtkIdType i = 0; i < n; ++i)
+            reaction->SetTuple3(i, r.reaction[3 * i], r.reaction[3 * i + 1], r.reaction[3 * i + 2]);
+        pd->AddArray(reaction);
+    }
+    if (!m.supports.empty()) {
+        vtkNew<vtkIntArray> fixed;
+        fixed->SetName("support");
+        fixed->SetNumberOfTuples(n);
+        std::fill_n(fixed->GetPointer(0), n, 0);
+        for (const Support& s : m.supports)
+            fixed->SetValue(s.node, fixed->GetValue(s.node) | (s.fixed[0] ? 1 : 0) | (s.fixed[1] ? 2 : 0) | (s.fixed[2] ? 4 : 0));
+        pd->AddArray(fixed);
+    }
+    if (!m.loads.empty() || !m.pressures.empty()) {
+        auto applied = make_array("applied_load", 3, n);
+        for (vtkIdType i = 0; i < n; ++i)
+            applied->SetTuple3(i, r.applied_load[3 * i], r.applied_load[3 * i + 1], r.applied_load[3 * i + 2]);
+        pd->AddArray(applied);
+    }
     if (has_bilateral(m)) {
         auto spring = make_array("spring_force", 3, n);
         for (const SpringResult& s : r.springs)

@@ -38,7 +38,9 @@ struct StepResult {
     int negative_pivots = 0;
     double residual = 0.0;          // relative residual at convergence
     std::vector<double> displacement; // 3 per node: ux, uy, rotation
-    std::vector<double> reaction;     // 3 per node, at supported DOFs (zero elsewhere)
+    std::vector<double> reaction;     // 3 per node, at supported and prescribed DOFs (zero elsewhere):
+                                      // the force the support exerts on the structure
+    std::vector<double> applied_load; // 3 per node: λ × the reference loads (pressure as it follows)
     std::vector<ElementResult> elements;
     std::vector<SpringResult> springs;
     int contact_count = 0;

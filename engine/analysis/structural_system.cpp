@@ -157,6 +157,7 @@ void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& e
                               StepResult& out) const {
     out.displacement.assign(u.data(), u.data() + u.size());
     out.reaction.assign(u.size(), 0.0);
+    out.applied_load.assign(external.data(), external.data() + external.size());
     for (int i = 0; i < dof_count(); ++i)
         if (equation_[i] < 0) out.reaction[i] = internal_[i] - external[i];
     // Spring forces are not support reactions: take them out of the supported DOFs.
