@@ -13,7 +13,7 @@ void add_render_options(po::options_description& options) {
         ("field", po::value<std::string>()->default_value(""), "point or cell array that colours the structure (default: yielded_share with distributed plasticity, else bending_moment)")
         ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
-        ("hide", po::value<std::string>(), "leave out layers: initial,hinges,contact")
+        ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
         ("no-animation", "PNG frames only, no GIF");
 }
 

@@ -42,6 +42,8 @@ FlatMarks::FlatMarks(double depth, bool on_screen) : depth_(depth) {
     prop_ = actor;
 }
 
+FlatMarks::~FlatMarks() = default;
+
 void FlatMarks::clear() {
     points_->Reset();
     polygons_->Reset();

@@ -1,4 +1,5 @@
 #include "frame_composer.hpp"
+#include "layer_list.hpp"
 
 #include <vtkImageData.h>
 #include <vtkRenderer.h>
@@ -49,13 +50,13 @@ std::string number(double value) {
 }
 
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
-                             const Layers& layers)
+                             const std::vector<std::string>& hidden)
     : summary_(summary), window_(width, height),
       chart_(summary.displacement_label, summary.load_label, text_scale(width, height)) {
     const double s = text_scale(width, height);
     const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
                                   static_cast<int>(std::lround((1.0 - band) * height))};
-    structure_ = std::make_unique<StructureView>(summary, first_step, base, structure_port, s, layers);
+    structure_ = std::make_unique<StructureView>(summary, make_layers(summary, first_step, base, hidden), structure_port, s);
 
     title_band_->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
     title_band_->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());

@@ -24,8 +24,9 @@ namespace plastica::render {
 
 class FrameComposer {
 public:
+    // hidden: layers left out by name (layer_list.hpp).
     FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
-                  const Layers& layers = {});
+                  const std::vector<std::string>& hidden = {});
     ~FrameComposer();
 
     // Draws step `index` of the summary's curve, whose data is `step`.

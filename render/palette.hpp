@@ -1,6 +1,6 @@
 // The colours of every picture, named once. Chosen to stay apart from each other and from the
 // cool–warm map of the coloured field: greys for what does not move, green for contact forces,
-// gold to purple for plastic hinges.
+// crimson for applied loads, gold to purple for plastic hinges.
 #pragma once
 
 namespace plastica::render {
@@ -22,6 +22,8 @@ constexpr Rgb base{70, 70, 70};
 constexpr Rgb hatching{130, 130, 130};
 constexpr Rgb spring_anchor{90, 90, 90};
 constexpr Rgb contact_force{0, 140, 60};
+constexpr Rgb support{55, 65, 85};
+constexpr Rgb load{190, 20, 60};
 constexpr Rgb hinge_yielding_low{250, 215, 40};  // just past first yield
 constexpr Rgb hinge_yielding_high{245, 130, 0};  // close to the capacity
 constexpr Rgb hinge_plastic{150, 30, 170};        // at the capacity M_p(N)

@@ -80,14 +80,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     vtkSmartPointer<vtkPolyData> base;
     if (!series.base_file.empty()) base = read_base(series.base_file);
     auto first = read_step(series.steps.front().file);
-    Layers layers;
-    for (const std::string& name : options.hide) {
-        if (name == "initial") layers.initial_shape = false;
-        else if (name == "hinges") layers.hinges = false;
-        else if (name == "contact") layers.contact = false;
-        else throw RenderError("--hide takes initial, hinges or contact (got '" + name + "')");
-    }
-    FrameComposer composer(summary, first, base, options.width, options.height, layers);
+    FrameComposer composer(summary, first, base, options.width, options.height, options.hide);
 
     const auto steps = chosen_steps(summary, options);
     ContactSheet sheet(steps.size());

@@ -15,7 +15,7 @@ struct RenderOptions {
     std::string field; // point or cell array colouring the structure; empty: yielded_share or bending_moment
     int every = 1;                        // draw every k-th step (the first and last always)
     std::vector<int> steps;               // draw exactly these step numbers instead (snapshots)
-    std::vector<std::string> hide;        // layers left out: initial, hinges, contact
+    std::vector<std::string> hide;        // layers left out: initial, base, hinges, contact, supports, loads
     std::vector<std::string> overlays;    // further series whose curves join chart.png
     bool animation = true;
     bool quiet = false;

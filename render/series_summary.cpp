@@ -33,6 +33,11 @@ int count_state(vtkDataArray* states, int state) {
 
 } // namespace
 
+bool on_mirror_line(const SeriesSummary& summary, const double* initial_position) {
+    const double x = initial_position[0];
+    return summary.mirrored && std::abs(x - summary.mirror_x) <= 1e-9 * (1.0 + std::abs(x));
+}
+
 double tuple_magnitude(vtkDataArray* array, long long i) {
     const int c = array->GetNumberOfComponents();
     if (c == 1) return array->GetComponent(i, 0);
@@ -111,6 +116,21 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                     s.max_contact_force = std::max(s.max_contact_force, f);
                     s.any_contact = s.any_contact || f > 0.0;
                 }
+        }
+        if (vtkDataArray* load = grid->GetPointData()->GetArray("applied_load")) {
+            for (vtkIdType i = 0; i < load->GetNumberOfTuples(); ++i) {
+                const double whole = on_mirror_line(s, initial->GetTuple3(i)) ? 2.0 : 1.0;
+                const double fx = whole * load->GetComponent(i, 0), fy = whole * load->GetComponent(i, 1);
+                const double f = std::hypot(fx, fy);
+                s.max_load_force = std::max(s.max_load_force, f);
+                s.max_load_moment = std::max(s.max_load_moment, whole * std::abs(load->GetComponent(i, 2)));
+                if (f <= 0.0) continue;
+                // An arrow points at its node, so its tail lies on the side the force comes from.
+                if (fx > 0.3 * f) s.load_sides |= 1;
+                if (fx < -0.3 * f) s.load_sides |= 2;
+                if (fy > 0.3 * f) s.load_sides |= 4;
+                if (fy < -0.3 * f) s.load_sides |= 8;
+            }
         }
         for (const char* end : {"hinge_state_i", "hinge_state_j"}) {
             vtkDataArray* st = grid->GetCellData()->GetArray(end);

@@ -41,10 +41,19 @@ struct SeriesSummary {
     bool mirrored = false;           // a half model drawn with its mirror image about x = mirror_x
     double mirror_x = 0.0;
     bool any_yielding = false, any_plastic = false, any_failed = false;
+    double max_load_force = 0.0;  // largest applied force at a node over the run
+    double max_load_moment = 0.0; // largest applied moment at a node over the run
+    // Sides of the structure the load arrows come from (their tails): bits 1 left, 2 right,
+    // 4 below, 8 above.
+    int load_sides = 0;
 };
 
 // Throws RenderError naming the step file, or listing the arrays when `field` is not one of them.
 SeriesSummary summarise(const ResultSeries& series, const std::string& field);
+
+// Whether a point of a half model lies on its mirror line: a support there states symmetry,
+// and a load there is half of the whole structure's.
+bool on_mirror_line(const SeriesSummary& summary, const double* initial_position);
 
 // The magnitude of tuple i of an array (its value when it has one component).
 double tuple_magnitude(vtkDataArray* array, long long i);

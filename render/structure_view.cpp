@@ -1,4 +1,5 @@
 #include "structure_view.hpp"
+#include "ribbon.hpp"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -46,23 +47,6 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
-vtkSmartPointer<vtkActor> ribbon_actor(vtkRibbonFilter* ribbon, double z) {
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(ribbon->GetOutputPort());
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    actor->SetPosition(0, 0, z);
-    return actor;
-}
-
-void set_ribbon(vtkRibbonFilter* ribbon, double width) {
-    ribbon->SetWidth(width / 2); // VTK's width is the half width
-    ribbon->UseDefaultNormalOn();
-    ribbon->SetDefaultNormal(0, 0, 1); // the ribbon lies in the drawing plane
-    ribbon->VaryWidthOff();
-}
-
 } // namespace
 
 std::string readable(std::string name) {
@@ -70,15 +54,12 @@ std::string readable(std::string name) {
     return name;
 }
 
-StructureView::StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base,
-                             const Viewport& viewport, double text_scale, const Layers& layers)
-    : summary_(summary), viewport_(viewport), show_hinges_(summary.inelastic && layers.hinges),
-      show_contact_(summary.any_contact && layers.contact) {
+StructureView::StructureView(const SeriesSummary& summary, std::vector<std::unique_ptr<Layer>> layers,
+                             const Viewport& viewport, double text_scale)
+    : summary_(summary), layers_(std::move(layers)), viewport_(viewport) {
     renderer_->SetViewport(viewport.x0, viewport.y0, viewport.x1, viewport.y1);
     renderer_->SetBackground(colour::background.red(), colour::background.green(), colour::background.blue());
-    has_base_ = base && base->GetNumberOfLines() > 0;
-    has_anchors_ = base && base->GetNumberOfVerts() > 0;
-    fix_camera();
+    const ViewGeometry view = fix_camera();
 
     // The field's colours: cool–warm, centred on zero when the values change sign.
     double lo = summary.field_range[0], hi = summary.field_range[1];
@@ -97,8 +78,8 @@ StructureView::StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* 
     colours_->SetRange(lo, hi);
     if (summary.field.components > 1) colours_->SetVectorModeToMagnitude();
 
-    set_ribbon(ribbon_, ribbon_width_);
-    set_ribbon(outline_, ribbon_width_ + pixels(3));
+    set_ribbon(ribbon_, view.ribbon_width);
+    set_ribbon(outline_, view.ribbon_width + view.pixels(3));
     ribbon_->SetInputConnection(geometry_->GetOutputPort());
     outline_->SetInputConnection(geometry_->GetOutputPort());
     auto shape = ribbon_actor(ribbon_, 0.0);
@@ -113,77 +94,53 @@ StructureView::StructureView(const SeriesSummary& summary, vtkUnstructuredGrid* 
     outline->GetMapper()->ScalarVisibilityOff();
     outline->GetProperty()->SetColor(colour::outline.red(), colour::outline.green(), colour::outline.blue());
 
-    if (layers.initial_shape) add_initial_shape(first_step);
-    if (has_base_ || has_anchors_) add_base(base);
-    add_with_mirror(outline);
-    add_with_mirror(shape);
-    renderer_->AddViewProp(base_.prop()); // the base line already spans both halves
-    for (FlatMarks* m : {&anchors_, &contact_, &hinge_under_, &hinge_, &hinge_failed_})
-        add_with_mirror(vtkActor::SafeDownCast(m->prop()));
+    const AddProp add = [this](vtkProp* prop, bool mirror) { add_with_mirror(prop, mirror); };
+    for (auto& layer : layers_) layer->attach(view, add);
+    add_with_mirror(outline, true);
+    add_with_mirror(shape, true);
     add_colour_bar(text_scale);
-    add_legend(text_scale, layers);
+    add_legend(text_scale);
 }
 
 StructureView::~StructureView() = default;
 
-void StructureView::fix_camera() {
+ViewGeometry StructureView::fix_camera() {
     const double* b = summary_.bounds;
     double width = std::max(b[1] - b[0], 1e-9), height = std::max(b[3] - b[2], 1e-9);
     const double size = std::max(width, height);
-    ribbon_width_ = 0.012 * size;
     double box[4] = {b[0] - 0.04 * size, b[1] + 0.04 * size, b[2] - 0.04 * size, b[3] + 0.04 * size};
-    // Room under the base for the contact arrows (their tips touch the structure) and hatching.
-    if (show_contact_ && summary_.max_contact_force > 0) {
-        arrow_scale_ = 0.14 * size / summary_.max_contact_force;
-        box[2] -= 0.14 * size;
-    }
-    if (has_base_) box[2] -= 0.05 * size;
+    for (auto& layer : layers_) layer->reserve(box, size);
     width = box[1] - box[0];
     height = box[3] - box[2];
     // The structure gets the viewport minus the side column, at true aspect ratio.
     const double usable_w = viewport_.width_px * (1.0 - side_column), usable_h = viewport_.height_px;
-    world_per_pixel_ = std::max(width / usable_w, height / usable_h);
+    ViewGeometry view;
+    view.world_per_pixel = std::max(width / usable_w, height / usable_h);
+    view.ribbon_width = 0.012 * size;
+    view.size = size;
+    view.mirrored = summary_.mirrored;
+    view.mirror_x = summary_.mirror_x;
     const double cx = 0.5 * (box[0] + box[1]), cy = 0.5 * (box[2] + box[3]);
-    view_[0] = cx - 0.5 * usable_w * world_per_pixel_;
-    view_[1] = view_[0] + viewport_.width_px * world_per_pixel_;
-    view_[2] = cy - 0.5 * usable_h * world_per_pixel_;
-    view_[3] = cy + 0.5 * usable_h * world_per_pixel_;
+    view.view[0] = cx - 0.5 * usable_w * view.world_per_pixel;
+    view.view[1] = view.view[0] + viewport_.width_px * view.world_per_pixel;
+    view.view[2] = cy - 0.5 * usable_h * view.world_per_pixel;
+    view.view[3] = cy + 0.5 * usable_h * view.world_per_pixel;
+    view.drawing_right = view.view[0] + (1.0 - side_column) * (view.view[1] - view.view[0]);
     vtkCamera* camera = renderer_->GetActiveCamera();
     camera->ParallelProjectionOn();
-    const double fx = 0.5 * (view_[0] + view_[1]), fy = 0.5 * (view_[2] + view_[3]);
+    const double fx = 0.5 * (view.view[0] + view.view[1]), fy = 0.5 * (view.view[2] + view.view[3]);
     camera->SetFocalPoint(fx, fy, 0);
     camera->SetPosition(fx, fy, 10 * size);
     camera->SetViewUp(0, 1, 0);
-    camera->SetParallelScale(0.5 * (view_[3] - view_[2]));
+    camera->SetParallelScale(0.5 * (view.view[3] - view.view[2]));
     camera->SetClippingRange(size, 20 * size);
+    return view;
 }
 
-void StructureView::add_initial_shape(vtkUnstructuredGrid* first_step) {
-    vtkNew<vtkPolyData> initial;
-    vtkNew<vtkPoints> points;
-    vtkDataArray* positions = first_step->GetPointData()->GetArray("initial_position");
-    points->SetNumberOfPoints(first_step->GetNumberOfPoints());
-    for (vtkIdType i = 0; i < first_step->GetNumberOfPoints(); ++i) points->SetPoint(i, positions->GetTuple3(i));
-    vtkNew<vtkCellArray> lines;
-    for (vtkIdType c = 0; c < first_step->GetNumberOfCells(); ++c) {
-        vtkIdType n;
-        const vtkIdType* ids;
-        first_step->GetCellPoints(c, n, ids);
-        lines->InsertNextCell(n, ids);
-    }
-    initial->SetPoints(points);
-    initial->SetLines(lines);
-    vtkNew<vtkRibbonFilter> ribbon;
-    ribbon->SetInputData(initial);
-    set_ribbon(ribbon, 0.6 * ribbon_width_);
-    auto actor = ribbon_actor(ribbon, -2.0);
-    actor->GetProperty()->SetColor(colour::initial_shape.red(), colour::initial_shape.green(), colour::initial_shape.blue());
-    add_with_mirror(actor);
-}
-
-void StructureView::add_with_mirror(vtkActor* actor) {
-    renderer_->AddActor(actor);
-    if (!summary_.mirrored) return;
+void StructureView::add_with_mirror(vtkProp* prop, bool mirror) {
+    renderer_->AddViewProp(prop);
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (!mirror || !summary_.mirrored || !actor) return;
     // The same data drawn reflected about x = mirror_x: x → 2·mirror_x − x.
     vtkNew<vtkTransform> reflect;
     reflect->Translate(summary_.mirror_x, 0, 0);
@@ -193,53 +150,6 @@ void StructureView::add_with_mirror(vtkActor* actor) {
     twin->ShallowCopy(actor);
     twin->SetUserTransform(reflect);
     renderer_->AddActor(twin);
-}
-
-void StructureView::add_base(vtkPolyData* base) {
-    vtkDataArray* kind = base->GetCellData()->GetArray("kind");
-    vtkCellArray* lines = base->GetLines();
-    lines->InitTraversal();
-    vtkIdType n;
-    const vtkIdType* ids;
-    const double cx = 0.5 * (summary_.bounds[0] + summary_.bounds[1]);
-    const double cy = 0.5 * (summary_.bounds[2] + summary_.bounds[3]);
-    const vtkIdType first_line = base->GetNumberOfVerts();
-    for (vtkIdType c = 0; lines->GetNextCell(n, ids); ++c) {
-        if (n < 2 || (kind && kind->GetComponent(first_line + c, 0) != 1)) continue;
-        double a[3], b[3];
-        base->GetPoint(ids[0], a);
-        base->GetPoint(ids[n - 1], b);
-        const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-        const double tx = (b[0] - a[0]) / length, ty = (b[1] - a[1]) / length;
-        double nx = -ty, ny = tx;
-        if ((cx - a[0]) * nx + (cy - a[1]) * ny < 0) nx = -nx, ny = -ny;
-        // Only the part left of the legend column is drawn, so the legend stays clear.
-        const double right = view_[0] + (1.0 - side_column) * (view_[1] - view_[0]);
-        double s0 = 0.0, s1 = length;
-        if (std::abs(tx) > 1e-12) {
-            const double sa = (view_[0] - a[0]) / tx, sb = (right - a[0]) / tx;
-            s0 = std::max(s0, std::min(sa, sb));
-            s1 = std::min(s1, std::max(sa, sb));
-        }
-        if (s1 <= s0) continue;
-        const double from[2] = {a[0] + s0 * tx, a[1] + s0 * ty}, to[2] = {a[0] + s1 * tx, a[1] + s1 * ty};
-        base_.bar(from, to, pixels(3), colour::base);
-        // Hatching on the far side, every 14 pixels.
-        const double step = pixels(14), tick = pixels(12);
-        for (double s = s0 + 0.5 * step; s <= s1; s += step) {
-            const double p[2] = {a[0] + s * tx, a[1] + s * ty};
-            if (p[1] < view_[2] - tick || p[1] > view_[3] + tick) continue;
-            const double q[2] = {p[0] - tick * (nx + tx) * M_SQRT1_2, p[1] - tick * (ny + ty) * M_SQRT1_2};
-            base_.bar(p, q, pixels(1.5), colour::hatching);
-        }
-    }
-    vtkCellArray* verts = base->GetVerts();
-    verts->InitTraversal();
-    while (verts->GetNextCell(n, ids)) {
-        double p[3];
-        base->GetPoint(ids[0], p);
-        anchors_.disc(p[0], p[1], pixels(4), colour::spring_anchor);
-    }
 }
 
 void StructureView::add_colour_bar(double text_scale) {
@@ -262,127 +172,65 @@ void StructureView::add_colour_bar(double text_scale) {
     renderer_->AddViewProp(colour_bar_);
 }
 
-void StructureView::add_legend(double text_scale, const Layers& layers) {
-    struct Entry { Rgb colour; double radius; bool cross; bool arrow; std::string text; bool outlined = false; };
-    std::vector<Entry> entries;
-    if (layers.initial_shape) entries.push_back({colour::initial_shape, 0, false, false, "initial shape"});
-    if (has_anchors_) entries.push_back({colour::spring_anchor, 4, false, false, "spring anchor"});
-    if (show_hinges_ && summary_.any_yielding)
-        entries.push_back({colour::hinge_yielding_high, 5, false, false, "yielding end"});
-    if (show_hinges_ && summary_.any_plastic)
-        entries.push_back({colour::hinge_plastic, 6, false, false, "fully plastic end", true});
-    if (show_hinges_ && summary_.any_failed)
-        entries.push_back({colour::hinge_failed, 6, true, false, "failed fibres"});
-    if (show_contact_)
-        entries.push_back({colour::contact_force, 0, false, true, "contact force"});
+void StructureView::add_legend(double text_scale) {
     const double s = text_scale;
     const double x = viewport_.width_px * (1.0 - side_column + 0.03);
     double y = viewport_.height_px * 0.42;
-    for (const Entry& e : entries) {
-        const double cx = x + 10 * s, cy = y;
-        if (e.arrow) {
-            const double tail[2] = {cx, cy - 9 * s}, tip[2] = {cx, cy + 9 * s};
-            legend_marks_.arrow(tail, tip, 3 * s, e.colour);
-        } else if (e.cross) {
-            legend_marks_.cross(cx, cy, 11 * s, 2.5 * s, e.colour);
-        } else if (e.radius > 0) {
-            // Overlay polygons share one depth and the depth test keeps the first one drawn,
-            // so the marker goes before its outline.
-            legend_marks_.disc(cx, cy, e.radius * s, e.colour);
-            if (e.outlined) legend_marks_.disc(cx, cy, (e.radius + 1.5) * s, colour::outline);
-        } else {
-            const double a[2] = {cx - 9 * s, cy}, b[2] = {cx + 9 * s, cy};
-            legend_marks_.bar(a, b, 5 * s, e.colour);
-        }
+    auto add_text = [&](const std::string& content, double size, double at_x, double at_y, bool top) {
         auto text = vtkSmartPointer<vtkTextActor>::New();
-        text->SetInput(e.text.c_str());
-        style_text(text->GetTextProperty(), 13 * s);
-        text->GetTextProperty()->SetVerticalJustificationToCentered();
-        text->SetPosition(x + 26 * s, y);
+        text->SetInput(content.c_str());
+        style_text(text->GetTextProperty(), size);
+        if (top) text->GetTextProperty()->SetVerticalJustificationToTop();
+        else text->GetTextProperty()->SetVerticalJustificationToCentered();
+        text->SetPosition(at_x, at_y);
         notes_.push_back(text);
-        y -= 26 * s;
+    };
+    for (const auto& layer : layers_) {
+        for (const LegendEntry& e : layer->legend()) {
+            const double cx = x + 10 * s, cy = y;
+            switch (e.mark) {
+            case LegendEntry::Mark::arrow: {
+                const double tail[2] = {cx, cy - 9 * s}, tip[2] = {cx, cy + 9 * s};
+                legend_marks_.arrow(tail, tip, 3 * s, e.colour);
+                break;
+            }
+            case LegendEntry::Mark::cross: legend_marks_.cross(cx, cy, 11 * s, 2.5 * s, e.colour); break;
+            case LegendEntry::Mark::disc: legend_marks_.disc(cx, cy, e.size * s, e.colour); break;
+            case LegendEntry::Mark::outlined_disc:
+                // Overlay polygons share one depth and the depth test keeps the first one drawn,
+                // so the marker goes before its outline.
+                legend_marks_.disc(cx, cy, e.size * s, e.colour);
+                legend_marks_.disc(cx, cy, (e.size + 1.5) * s, colour::outline);
+                break;
+            case LegendEntry::Mark::triangle: {
+                const double xy[6] = {cx, cy + 8 * s, cx - 8 * s, cy - 7 * s, cx + 8 * s, cy - 7 * s};
+                legend_marks_.polygon(xy, 3, e.colour);
+                break;
+            }
+            case LegendEntry::Mark::bar: {
+                const double a[2] = {cx - 9 * s, cy}, b[2] = {cx + 9 * s, cy};
+                legend_marks_.bar(a, b, 5 * s, e.colour);
+                break;
+            }
+            }
+            add_text(e.text, 13 * s, x + 26 * s, y, false);
+            y -= 26 * s;
+        }
+        if (const std::string note = layer->note(); !note.empty()) {
+            add_text(note, 12 * s, x + 26 * s, y + 8 * s, true);
+            y -= 34 * s;
+        }
     }
-    if (summary_.mirrored) {
-        auto note = vtkSmartPointer<vtkTextActor>::New();
-        note->SetInput(("half model, drawn mirrored\nabout x = " + format("%g", summary_.mirror_x)).c_str());
-        style_text(note->GetTextProperty(), 12 * s);
-        note->GetTextProperty()->SetVerticalJustificationToTop();
-        note->SetPosition(x, viewport_.height_px * 0.06 + 12 * s);
-        notes_.push_back(note);
-    }
-    if (show_contact_) {
-        auto note = vtkSmartPointer<vtkTextActor>::New();
-        const std::string text = "longest arrow: " + format("%.4g", summary_.max_contact_force) + "\n(largest in the run)";
-        note->SetInput(text.c_str());
-        style_text(note->GetTextProperty(), 12 * s);
-        note->GetTextProperty()->SetVerticalJustificationToTop();
-        note->SetPosition(x + 26 * s, y + 8 * s);
-        notes_.push_back(note);
-    }
+    if (summary_.mirrored)
+        add_text("half model,\ndrawn mirrored\nabout x = " + format("%g", summary_.mirror_x), 12 * s, x,
+                 viewport_.height_px * 0.06 + 24 * s, true);
     renderer_->AddViewProp(legend_marks_.prop());
     for (auto& n : notes_) renderer_->AddViewProp(n);
 }
 
 void StructureView::show(vtkUnstructuredGrid* step) {
     geometry_->SetInputData(step);
-    draw_contact_forces(step);
-    draw_hinges(step);
-}
-
-void StructureView::draw_contact_forces(vtkUnstructuredGrid* step) {
-    contact_.clear();
-    if (!show_contact_) return;
-    vtkDataArray* force = step->GetPointData()->GetArray("contact_force");
-    vtkDataArray* state = step->GetPointData()->GetArray("contact");
-    if (!force) return;
-    for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
-        if (state && state->GetComponent(i, 0) <= 0) continue;
-        const double fx = force->GetComponent(i, 0), fy = force->GetComponent(i, 1);
-        const double magnitude = std::hypot(fx, fy);
-        if (magnitude <= 0) continue;
-        double p[3];
-        step->GetPoint(i, p);
-        const double length = arrow_scale_ * magnitude;
-        const double tip[2] = {p[0] - 0.5 * ribbon_width_ * fx / magnitude, p[1] - 0.5 * ribbon_width_ * fy / magnitude};
-        const double tail[2] = {tip[0] - length * fx / magnitude, tip[1] - length * fy / magnitude};
-        contact_.arrow(tail, tip, pixels(3.5), colour::contact_force);
-    }
-}
-
-void StructureView::draw_hinges(vtkUnstructuredGrid* step) {
-    hinge_.clear();
-    hinge_under_.clear();
-    hinge_failed_.clear();
-    if (!show_hinges_) return;
-    vtkDataArray* states[2] = {step->GetCellData()->GetArray("hinge_state_i"), step->GetCellData()->GetArray("hinge_state_j")};
-    vtkDataArray* use[2] = {step->GetCellData()->GetArray("utilisation_i"), step->GetCellData()->GetArray("utilisation_j")};
-    if (!states[0] || !states[1] || !use[0] || !use[1]) return;
-    const double r = pixels(4.5);
-    for (vtkIdType c = 0; c < step->GetNumberOfCells(); ++c) {
-        vtkIdType n;
-        const vtkIdType* ids;
-        step->GetCellPoints(c, n, ids);
-        if (n != 2) continue;
-        double a[3], b[3];
-        step->GetPoint(ids[0], a);
-        step->GetPoint(ids[1], b);
-        for (int end = 0; end < 2; ++end) {
-            const int state = static_cast<int>(states[end]->GetComponent(c, 0));
-            if (state == 0) continue;
-            const double u = std::clamp(use[end]->GetComponent(c, 0), 0.0, 1.0);
-            // A quarter of the element in from its end, so the two ends meeting at a node stay apart.
-            const double* from = end == 0 ? a : b;
-            const double* to = end == 0 ? b : a;
-            const double x = from[0] + 0.25 * (to[0] - from[0]), y = from[1] + 0.25 * (to[1] - from[1]);
-            if (state == 1) {
-                hinge_.disc(x, y, r * (0.5 + 0.6 * u), mix(colour::hinge_yielding_low, colour::hinge_yielding_high, u));
-            } else {
-                hinge_under_.disc(x, y, 1.55 * r, colour::outline);
-                hinge_.disc(x, y, 1.3 * r, colour::hinge_plastic);
-                if (state == 3) hinge_failed_.cross(x, y, 2.2 * r, pixels(2), colour::hinge_failed);
-            }
-        }
-    }
+    for (auto& layer : layers_) layer->show(step);
 }
 
 } // namespace plastica::render

@@ -60,6 +60,11 @@ void write_long_run(const fs::path& path) {
     std::ofstream(path) << s;
 }
 
+// Shell words that wait (up to 60 s) until a file exists.
+std::string wait_for(const fs::path& file) {
+    return "for i in $(seq 600); do [ -e '" + file.string() + "' ] && break; sleep 0.1; done; ";
+}
+
 } // namespace
 
 TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json and the series", "[cli]") {
@@ -352,7 +357,8 @@ TEST_CASE("After a SIGKILL the folder still names its scene, and the same run ma
     const fs::path out = dir / "out";
     // Killed without a chance to clean up: run.json is the one written at the start.
     const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " run " + (dir / "long.toml").string() +
-                            " -o " + out.string() + " -q --no-render > /dev/null 2>&1 & pid=$!; sleep 1; kill -KILL $pid; wait $pid";
+                            " -o " + out.string() + " -q --no-render > /dev/null 2>&1 & pid=$!; " +
+                            wait_for(out / "vtu" / "step_000010.vtu") + "kill -KILL $pid; wait $pid";
     const int status = std::system(cmd.c_str());
     CHECK(WEXITSTATUS(status) == 128 + 9);
     std::ifstream report(out / "run.json");
@@ -374,10 +380,11 @@ TEST_CASE("Ctrl-C and SIGTERM stop a run cleanly: exit 130, valid series, run.js
     write_long_run(dir / "long.toml");
     for (const char* signal : {"INT", "TERM"}) {
         const fs::path out = dir / signal;
-        // Started in the background, stopped after two seconds; the shell reports its exit code.
+        // Started in the background, stopped once it has written 100 steps (not after a fixed
+        // time, which a busy machine may spend starting up); the shell reports its exit code.
         const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " run " + (dir / "long.toml").string() +
-                                " -o " + out.string() + " -q > /dev/null 2>&1 & pid=$!; sleep 2; kill -" + signal +
-                                " $pid; wait $pid";
+                                " -o " + out.string() + " -q > /dev/null 2>&1 & pid=$!; " + wait_for(out / "vtu" / "step_000100.vtu") +
+                                "kill -" + signal + " $pid; wait $pid";
         const int status = std::system(cmd.c_str());
         CHECK(WEXITSTATUS(status) == 130);
         std::ifstream report(out / "run.json");

@@ -109,6 +109,44 @@ TEST_CASE("A distributed-plasticity ring is shaded by the yielded share, without
     CHECK(count_pixels(first, yielded_through, 0, structure_right, band_bottom, 1) == 0);
 }
 
+TEST_CASE("Supports and loads are drawn where the scene has them, and --hide leaves them out", "[render]") {
+    unsetenv("DISPLAY");
+    // The portal frame: two clamped feet at the bottom, gravity loads on the column heads and a
+    // sway load, drawn as arrows above the frame.
+    const fs::path portal = solved_series("gallery/portal_frame", 200, "portal");
+    render_series(portal.string(), small(portal / "pictures"));
+    auto frame = read_png((portal / "pictures" / "frames" / "frame_000200.png").string());
+    const auto support = [](Pixel p) { return is(p, colour::support); };
+    const auto load = [](Pixel p) { return is(p, colour::load); };
+    const double middle = 0.5 * (band_bottom + 1.0);
+    CHECK(count_pixels(frame, support, 0, structure_right, middle, 1) > 40);
+    CHECK(count_pixels(frame, support, 0, structure_right, band_bottom, middle) == 0);
+    CHECK(count_pixels(frame, load, 0, structure_right, band_bottom, middle) > 40);
+    CHECK(count_pixels(frame, load, 0, structure_right, middle, 1) == 0);
+    // Unloaded, the load arrows are gone; the supports stay.
+    auto first = read_png((portal / "pictures" / "frames" / "frame_000000.png").string());
+    CHECK(count_pixels(first, load, 0, structure_right, band_bottom, 1) == 0);
+    CHECK(count_pixels(first, support, 0, structure_right, band_bottom, 1) > 40);
+
+    RenderOptions hidden = small(portal / "hidden");
+    hidden.hide = {"supports", "loads"};
+    render_series(portal.string(), hidden);
+    frame = read_png((portal / "hidden" / "frames" / "frame_000200.png").string());
+    CHECK(count_pixels(frame, support) == 0);
+    CHECK(count_pixels(frame, load, 0, structure_right, band_bottom, 1) == 0);
+    hidden.hide = {"suports"};
+    CHECK_THROWS_WITH(render_series(portal.string(), hidden),
+                      Catch::Contains("--hide takes initial, base, hinges, contact, supports, loads (got 'suports')"));
+
+    // The half ring's supports state symmetry on its mirror line: no symbols; its load at the
+    // top is drawn, in the upper half of the view.
+    const fs::path ring = solved_series("ring_elastic", 100, "ring_loads");
+    render_series(ring.string(), small(ring / "pictures"));
+    frame = read_png((ring / "pictures" / "frames" / "frame_000200.png").string());
+    CHECK(count_pixels(frame, support) == 0);
+    CHECK(count_pixels(frame, load, 0, structure_right, band_bottom, middle) > 20);
+}
+
 TEST_CASE("The chart's curve rises where the load rises", "[render]") {
     unsetenv("DISPLAY");
     const fs::path series = solved_series("ring_elastic", 10, "chart");

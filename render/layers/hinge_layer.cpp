@@ -1,0 +1,78 @@
+#include "flat_marks.hpp"
+#include "layers/layers.hpp"
+
+#include <vtkActor.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+
+namespace plastica::render {
+
+namespace {
+
+class HingeLayer final : public Layer {
+public:
+    explicit HingeLayer(const SeriesSummary& summary) : summary_(summary) {}
+
+    void attach(const ViewGeometry& view, const AddProp& add) override {
+        view_ = view;
+        for (FlatMarks* m : {&under_, &markers_, &failed_}) add(m->prop(), true);
+    }
+
+    void show(vtkUnstructuredGrid* step) override {
+        markers_.clear();
+        under_.clear();
+        failed_.clear();
+        vtkCellData* cd = step->GetCellData();
+        vtkDataArray* states[2] = {cd->GetArray("hinge_state_i"), cd->GetArray("hinge_state_j")};
+        vtkDataArray* use[2] = {cd->GetArray("utilisation_i"), cd->GetArray("utilisation_j")};
+        if (!states[0] || !states[1] || !use[0] || !use[1]) return;
+        const double r = view_.pixels(4.5);
+        for (vtkIdType c = 0; c < step->GetNumberOfCells(); ++c) {
+            vtkIdType n;
+            const vtkIdType* ids;
+            step->GetCellPoints(c, n, ids);
+            if (n != 2) continue;
+            double a[3], b[3];
+            step->GetPoint(ids[0], a);
+            step->GetPoint(ids[1], b);
+            for (int end = 0; end < 2; ++end) {
+                const int state = static_cast<int>(states[end]->GetComponent(c, 0));
+                if (state == 0) continue;
+                const double u = std::clamp(use[end]->GetComponent(c, 0), 0.0, 1.0);
+                // A quarter of the element in from its end, so the two ends meeting at a node stay apart.
+                const double* from = end == 0 ? a : b;
+                const double* to = end == 0 ? b : a;
+                const double x = from[0] + 0.25 * (to[0] - from[0]), y = from[1] + 0.25 * (to[1] - from[1]);
+                if (state == 1) {
+                    markers_.disc(x, y, r * (0.5 + 0.6 * u), mix(colour::hinge_yielding_low, colour::hinge_yielding_high, u));
+                } else {
+                    under_.disc(x, y, 1.55 * r, colour::outline);
+                    markers_.disc(x, y, 1.3 * r, colour::hinge_plastic);
+                    if (state == 3) failed_.cross(x, y, 2.2 * r, view_.pixels(2), colour::hinge_failed);
+                }
+            }
+        }
+    }
+
+    std::vector<LegendEntry> legend() const override {
+        std::vector<LegendEntry> entries;
+        if (summary_.any_yielding) entries.push_back({LegendEntry::Mark::disc, colour::hinge_yielding_high, 5.0, "yielding end"});
+        if (summary_.any_plastic) entries.push_back({LegendEntry::Mark::outlined_disc, colour::hinge_plastic, 6.0, "fully plastic end"});
+        if (summary_.any_failed) entries.push_back({LegendEntry::Mark::cross, colour::hinge_failed, 6.0, "failed fibres"});
+        return entries;
+    }
+
+private:
+    const SeriesSummary& summary_;
+    ViewGeometry view_;
+    FlatMarks under_{4.0}, markers_{5.0}, failed_{6.0};
+};
+
+} // namespace
+
+std::unique_ptr<Layer> hinge_layer(const SeriesSummary& summary) { return std::make_unique<HingeLayer>(summary); }
+
+} // namespace plastica::render

@@ -1,0 +1,30 @@
+// The layers of the structure view, one file each (see layer.hpp); layer_list.cpp decides which
+// a series needs.
+#pragma once
+
+#include "layer.hpp"
+#include "series_summary.hpp"
+
+#include <memory>
+
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+namespace plastica::render {
+
+// The undeformed members, faint behind the deformed ones.
+std::unique_ptr<Layer> initial_shape_layer(vtkUnstructuredGrid* first_step);
+// The rigid base line with hatching, and the anchors of bilateral springs.
+std::unique_ptr<Layer> base_layer(const SeriesSummary& summary, vtkPolyData* base);
+// Contact forces of the base as arrows whose tips touch the structure.
+std::unique_ptr<Layer> contact_layer(const SeriesSummary& summary);
+// Plastic hinges at element ends: yielding (gold to orange by utilisation), fully plastic,
+// failed fibres.
+std::unique_ptr<Layer> hinge_layer(const SeriesSummary& summary);
+// Support symbols at the supported nodes: clamp, pin, roller, guide.
+std::unique_ptr<Layer> support_layer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step);
+// Applied loads as arrows pointing at their nodes (moments as curved arrows), scaled to the
+// largest in the run.
+std::unique_ptr<Layer> load_layer(const SeriesSummary& summary);
+
+} // namespace plastica::render

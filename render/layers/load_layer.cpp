@@ -1,0 +1,109 @@
+#include "flat_marks.hpp"
+#include "layers/layers.hpp"
+
+#include <vtkActor.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace plastica::render {
+
+namespace {
+
+std::string short_number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
+class LoadLayer final : public Layer {
+public:
+    explicit LoadLayer(const SeriesSummary& summary) : summary_(summary) {}
+
+    void reserve(double box[4], double size) override {
+        // The longest arrow is 12 % of the structure's size; its tail lies beyond the node on
+        // the side the force comes from.
+        length_ = 0.12 * size;
+        const int sides = summary_.load_sides;
+        if (sides & 1) box[0] -= length_;
+        if (sides & 2) box[1] += length_;
+        if (sides & 4) box[2] -= length_;
+        if (sides & 8) box[3] += length_;
+    }
+
+    void attach(const ViewGeometry& view, const AddProp& add) override {
+        view_ = view;
+        add(arrows_.prop(), true);
+    }
+
+    void show(vtkUnstructuredGrid* step) override {
+        arrows_.clear();
+        vtkDataArray* load = step->GetPointData()->GetArray("applied_load");
+        vtkDataArray* initial = step->GetPointData()->GetArray("initial_position");
+        if (!load || !initial) return;
+        for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
+            double p[3];
+            step->GetPoint(i, p);
+            // A half model carries half of a load on its mirror line: the arrow shows the whole.
+            const double whole = on_mirror_line(summary_, initial->GetTuple3(i)) ? 2.0 : 1.0;
+            const double fx = whole * load->GetComponent(i, 0), fy = whole * load->GetComponent(i, 1),
+                         m = whole * load->GetComponent(i, 2);
+            const double f = std::hypot(fx, fy);
+            if (summary_.max_load_force > 0 && f > 1e-9 * summary_.max_load_force) {
+                // The tip touches the ribbon's edge; short arrows keep a visible length.
+                const double length = std::max(length_ * f / summary_.max_load_force, view_.pixels(8));
+                const double tip[2] = {p[0] - 0.5 * view_.ribbon_width * fx / f, p[1] - 0.5 * view_.ribbon_width * fy / f};
+                const double tail[2] = {tip[0] - length * fx / f, tip[1] - length * fy / f};
+                arrows_.arrow(tail, tip, view_.pixels(3), colour::load);
+            }
+            if (summary_.max_load_moment > 0 && std::abs(m) > 1e-9 * summary_.max_load_moment) moment_arrow(p, m > 0);
+        }
+    }
+
+    std::vector<LegendEntry> legend() const override {
+        return {{LegendEntry::Mark::arrow, colour::load, 0.0, summary_.max_load_force > 0 ? "applied load" : "applied moment"}};
+    }
+
+    std::string note() const override {
+        std::string text;
+        if (summary_.max_load_force > 0) text = "longest arrow: " + short_number(summary_.max_load_force);
+        if (summary_.max_load_moment > 0)
+            text += (text.empty() ? "" : ", ") + std::string("moment ") + short_number(summary_.max_load_moment);
+        return text + "\n(largest in the run)";
+    }
+
+private:
+    // A three-quarter circle round the node, its head showing the sense of the moment.
+    void moment_arrow(const double p[3], bool counter_clockwise) {
+        const double r = view_.pixels(16), sense = counter_clockwise ? 1.0 : -1.0;
+        constexpr int pieces = 14;
+        const double start = -0.75 * M_PI, sweep = 1.5 * M_PI;
+        double previous[2] = {p[0] + r * std::cos(start), p[1] + r * std::sin(start)};
+        double end = start;
+        for (int k = 1; k <= pieces; ++k) {
+            end = start + sense * sweep * k / pieces;
+            const double next[2] = {p[0] + r * std::cos(end), p[1] + r * std::sin(end)};
+            arrows_.bar(previous, next, view_.pixels(3), colour::load);
+            previous[0] = next[0], previous[1] = next[1];
+        }
+        // The head along the circle's tangent at its end.
+        const double tangent[2] = {-sense * std::sin(end), sense * std::cos(end)};
+        const double tail[2] = {previous[0] - view_.pixels(10) * tangent[0], previous[1] - view_.pixels(10) * tangent[1]};
+        const double tip[2] = {previous[0] + view_.pixels(3) * tangent[0], previous[1] + view_.pixels(3) * tangent[1]};
+        arrows_.arrow(tail, tip, view_.pixels(3), colour::load);
+    }
+
+    const SeriesSummary& summary_;
+    double length_ = 0.0;
+    ViewGeometry view_;
+    FlatMarks arrows_{3.5};
+};
+
+} // namespace
+
+std::unique_ptr<Layer> load_layer(const SeriesSummary& summary) { return std::make_unique<LoadLayer>(summary); }
+
+} // namespace plastica::render
