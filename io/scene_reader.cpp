@@ -542,7 +542,8 @@ private:
         const Tables list = array_of_tables(top, "foundation");
         for (std::size_t i = 0; i < list.size(); ++i) {
             TomlTableReader r(*list[i].first, file_, indexed("foundation", i));
-            const bool unilateral = r.choice("kind", {"unilateral", "bilateral"}, "bilateral") == "unilateral";
+            const std::string kind = r.choice("kind", {"unilateral", "bilateral", "tensionless"}, "bilateral");
+            const bool unilateral = kind == "unilateral", tensionless = kind == "tensionless";
             std::vector<int> nodes;
             const std::string on = r.string_or("on", "");
             if (!on.empty()) {
@@ -586,6 +587,11 @@ private:
             for (const auto& [key, v] : {std::pair{"kx", kx}, std::pair{"ky", ky}, std::pair{"krot", kr}})
                 if (v < 0.0) r.fail(key, "expected a stiffness ≥ 0");
             if (unilateral && !(ky > 0.0)) r.fail("ky", "a unilateral base needs a positive normal stiffness 'ky'");
+            if (tensionless && !(ky > 0.0)) r.fail("ky", "a tensionless bed needs a positive stiffness 'ky' along its 'direction'");
+            if (tensionless && (kx != 0.0 || kr != 0.0))
+                r.fail(kx != 0.0 ? "kx" : "krot", "a tensionless bed pushes along its 'direction' only, with stiffness 'ky'");
+            if (!tensionless && r.has("direction"))
+                r.fail("direction", "a direction belongs to a tensionless bed (kind = \"tensionless\")");
             if (!unilateral && kx == 0.0 && ky == 0.0 && kr == 0.0) r.fail("ky", "a foundation needs a positive kx, ky or krot");
             const bool per_length = r.boolean_or("per_length", false);
             std::vector<double> tributary(model_.nodes.size(), 1.0);
@@ -622,16 +628,51 @@ private:
                     r.fail(r.has("base_point") ? "base_point" : "base_normal",
                            "a base line belongs to a unilateral foundation (kind = \"unilateral\")");
             }
-            for (int n : nodes) {
+            const std::vector<std::array<double, 2>> directions = tensionless ? bed_directions(r, nodes) : std::vector<std::array<double, 2>>{};
+            for (std::size_t k = 0; k < nodes.size(); ++k) {
+                const int n = nodes[k];
                 FoundationSpring s;
                 s.node = n;
                 const double f = scale[n] * tributary[n];
                 s.kx = kx * f; s.ky = ky * f; s.krot = kr * f;
-                s.unilateral = unilateral;
+                s.unilateral = unilateral || tensionless;
+                s.anchored = tensionless;
+                if (tensionless) s.direction = directions[k];
                 model_.springs.push_back(s);
             }
-            r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal"});
+            r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal", "direction"});
         }
+    }
+
+    // The direction a tensionless bed pushes at each node: a fixed vector, or the members' left
+    // or right normal there (the mean of the adjacent elements' normals: toward the centre of a
+    // counter-clockwise arc for "left_normal").
+    std::vector<std::array<double, 2>> bed_directions(TomlTableReader& r, const std::vector<int>& nodes) {
+        std::vector<std::array<double, 2>> out(nodes.size(), {0.0, 1.0});
+        const toml::node* given = r.has("direction") ? r.node("direction") : nullptr;
+        if (given && given->is_array()) {
+            std::array<double, 2> d = r.point("direction");
+            const double length = std::hypot(d[0], d[1]);
+            if (!(length > 0.0)) r.fail("direction", "expected a non-zero vector");
+            std::fill(out.begin(), out.end(), std::array<double, 2>{d[0] / length, d[1] / length});
+            return out;
+        }
+        if (!given) return out;
+        const std::string side = r.choice("direction", {"left_normal", "right_normal"}, "left_normal");
+        const double sign = side == "left_normal" ? 1.0 : -1.0;
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+            double nx = 0.0, ny = 0.0;
+            for (const ElementSpec& e : model_.elements) {
+                if (e.node_i != nodes[k] && e.node_j != nodes[k]) continue;
+                const Node &a = model_.nodes[e.node_i], &b = model_.nodes[e.node_j];
+                const double length = std::hypot(b.x - a.x, b.y - a.y);
+                nx += -(b.y - a.y) / length, ny += (b.x - a.x) / length;
+            }
+            const double length = std::hypot(nx, ny);
+            if (!(length > 1e-12)) r.fail("direction", "the members at " + describe_node(nodes[k]) + " have no one normal");
+            out[k] = {sign * nx / length, sign * ny / length};
+        }
+        return out;
     }
 
     std::string describe_node(int n) const {

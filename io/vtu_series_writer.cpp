@@ -368,7 +368,7 @@ void VtuSeriesWriter::write_base() {
     vtkNew<vtkIntArray> kind; // 0 spring anchor, 1 rigid base
     kind->SetName("kind");
     for (const FoundationSpring& s : m.springs) {
-        if (s.unilateral) continue;
+        if (s.unilateral) continue; // a base line holds these (drawn below); a tensionless bed shows by its contact forces
         const vtkIdType id = points->InsertNextPoint(m.nodes[s.node].x, m.nodes[s.node].y, 0.0);
         verts->InsertNextCell(1, &id);
     }

@@ -221,9 +221,10 @@ void StructureView::add_legend(double text_scale) {
             y -= 34 * s;
         }
     }
+    // Under the entries (at the foot of the view when they are few).
     if (summary_.mirrored)
         add_text("half model,\ndrawn mirrored\nabout x = " + format("%g", summary_.mirror_x), 12 * s, x,
-                 viewport_.height_px * 0.06 + 24 * s, true);
+                 std::min(y + 4 * s, viewport_.height_px * 0.06 + 24 * s), true);
     renderer_->AddViewProp(legend_marks_.prop());
     for (auto& n : notes_) renderer_->AddViewProp(n);
 }

@@ -95,8 +95,12 @@ TEST_CASE("A beam on a Winkler foundation matches Hetényi's closed form as the 
 
 TEST_CASE("A tensionless foundation lifts off beyond a = π/2β and deflects 1.0903 × the bilateral value", "[foundation][contact]") {
     // βL = 10, s = 0.1: w0 = coth(π/2)·Pβ/2k = 0.136291·P, contact |x| ≤ π/2β (BENCHMARKS.md §3.2).
+    // Both ways to model it: springs against a rigid base line through the beam's axis, and a
+    // tensionless bed anchored at each node's initial position.
+    const std::string kind = GENERATE(as<std::string>{}, "unilateral", "tensionless");
+    INFO(kind);
     const double P = 1e-4;
-    const Run r = winkler_beam(10.0, 100, "unilateral", P);
+    const Run r = winkler_beam(10.0, 100, kind, P);
     REQUIRE(r.summary.status == RunStatus::completed);
     const StepResult& s = r.steps.back();
     const double w0 = -r.node_dof(s, 0.0, 0.0, 1) / P;
@@ -109,7 +113,7 @@ TEST_CASE("A tensionless foundation lifts off beyond a = π/2β and deflects 1.0
         if (std::abs(x) > M_PI / 2 + 0.1) CHECK_FALSE(sp.active);
     }
     // The lifted ends carry no force and the response is linear in P once the zone is fixed.
-    const Run r2 = winkler_beam(10.0, 100, "unilateral", 3 * P);
+    const Run r2 = winkler_beam(10.0, 100, kind, 3 * P);
     CHECK(-r2.node_dof(r2.steps.back(), 0.0, 0.0, 1) / (3 * P) == Approx(w0).epsilon(1e-6));
     CHECK(r2.steps.back().contact_count == s.contact_count);
 }
@@ -198,4 +202,44 @@ target_displacement = 40.0
         CAPTURE(half.steps[k].control_displacement);
         CHECK(full.steps[k].load == Approx(half.steps[k].load).epsilon(1e-6));
     }
+}
+
+TEST_CASE("A tensionless bed follows the members' normals: a pipe in soil bears where it pushes outward", "[foundation][contact]") {
+    // A straight beam from left to right: its left normal is +y, the default direction.
+    const std::string beam = "[scene]\nname = \"bed\"\n[[material]]\nname = \"m\"\nE = 1.0\n[[section]]\nname = \"s\"\n"
+                             "material = \"m\"\nA = 1e6\nI = 1.0\n[[line]]\nname = \"beam\"\nstart = [-5.0, 0.0]\nend = [5.0, 0.0]\n"
+                             "elements = 20\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\"]\n"
+                             "[[foundation]]\nkind = \"tensionless\"\non = \"beam\"\nky = 4.0\nper_length = true\n";
+    const std::string loaded = "[[load]]\nat = [0.0, 0.0]\nfy = -1e-4\n[analysis]\nscheme = \"load_control\"\n"
+                               "increment = 1.0\ntarget_load_factor = 1.0\nresidual_tolerance = 1e-8\n";
+    const Run fixed = run_scene(beam + loaded);
+    const Run normal = run_scene(beam + "direction = \"left_normal\"\n" + loaded);
+    REQUIRE(fixed.summary.status == RunStatus::completed);
+    REQUIRE(normal.summary.status == RunStatus::completed);
+    CHECK(fixed.steps.back().displacement == normal.steps.back().displacement);
+
+    // A ring of radius 1 in soil all round (the left normal of a counter-clockwise ring points to
+    // its centre: the soil pushes inward), pressed down at its top: the crown moves in, away from
+    // its soil, the invert and the springings move out into theirs. The bed carries the load.
+    const Run pipe = run_scene(
+        "[scene]\nname = \"pipe\"\n[[material]]\nname = \"m\"\nE = 1.0\n[[section]]\nname = \"s\"\nmaterial = \"m\"\n"
+        "A = 1e4\nI = 1.0\n[[arc]]\nname = \"pipe\"\ncenter = [0.0, 0.0]\nradius = 1.0\nstart_angle = -90.0\nend_angle = 270.0\n"
+        "elements = 48\nsection = \"s\"\n[[support]]\nat = [0.0, 1.0]\nfix = [\"ux\"]\n[[foundation]]\nkind = \"tensionless\"\n"
+        "on = \"pipe\"\nky = 10.0\nper_length = true\ndirection = \"left_normal\"\n[[load]]\nat = [0.0, 1.0]\nfy = -1e-3\n"
+        "[analysis]\nscheme = \"load_control\"\nincrement = 1.0\ntarget_load_factor = 1.0\nresidual_tolerance = 1e-9\n");
+    REQUIRE(pipe.summary.status == RunStatus::completed);
+    const StepResult& s = pipe.steps.back();
+    double carried = 0.0;
+    bool crown_free = false, invert_bears = false, sides_bear = false;
+    for (const SpringResult& sp : s.springs) {
+        carried += sp.force[1];
+        const Node& n = pipe.model.nodes[sp.node];
+        if (std::abs(n.x) < 1e-9 && n.y > 0.99) crown_free = !sp.active;
+        if (std::abs(n.x) < 1e-9 && n.y < -0.99) invert_bears = sp.active;
+        if (std::abs(n.y) < 1e-9) sides_bear = sp.active;
+    }
+    CHECK(carried == Approx(1e-3).epsilon(1e-6));
+    CHECK(crown_free);
+    CHECK(invert_bears);
+    CHECK(sides_bear);
 }

@@ -15,7 +15,6 @@ Foundation::Foundation(const Model& model)
 
 void Foundation::evaluate(const Eigen::VectorXd& u, bool freeze_active) {
     changed_ = false;
-    const Eigen::Vector2d normal(base_.normal[0], base_.normal[1]);
     for (std::size_t k = 0; k < springs_.size(); ++k) {
         const FoundationSpring& sp = springs_[k];
         SpringState& st = states_[k];
@@ -24,17 +23,27 @@ void Foundation::evaluate(const Eigen::VectorXd& u, bool freeze_active) {
             st.force = -Eigen::Vector3d(sp.kx * d[0], sp.ky * d[1], sp.krot * d[2]);
             continue;
         }
-        const Node& n0 = nodes_[sp.node];
-        const Eigen::Vector2d x(n0.x + d[0], n0.y + d[1]);
-        st.gap = (x - Eigen::Vector2d(base_.point[0], base_.point[1])).dot(normal);
+        const Eigen::Vector2d n = normal_of(sp);
+        if (sp.anchored) {
+            st.gap = d.head<2>().dot(n); // the bed is where the node started
+        } else {
+            const Node& n0 = nodes_[sp.node];
+            const Eigen::Vector2d x(n0.x + d[0], n0.y + d[1]);
+            st.gap = (x - Eigen::Vector2d(base_.point[0], base_.point[1])).dot(n);
+        }
         const bool touching = st.gap <= 0.0;
         if (!freeze_active) {
             changed_ = changed_ || touching != st.active;
             st.active = touching;
         }
         st.force.setZero();
-        if (st.active) st.force.head<2>() = -sp.ky * st.gap * normal;
+        if (st.active) st.force.head<2>() = -sp.ky * st.gap * n;
     }
+}
+
+Eigen::Vector2d Foundation::normal_of(const FoundationSpring& spring) const {
+    if (spring.anchored) return Eigen::Vector2d(spring.direction[0], spring.direction[1]);
+    return Eigen::Vector2d(base_.normal[0], base_.normal[1]);
 }
 
 bool Foundation::active_set_consistent() const {
@@ -49,7 +58,7 @@ Eigen::Matrix3d Foundation::tangent(std::size_t k) const {
     if (!sp.unilateral) {
         t.diagonal() << sp.kx, sp.ky, sp.krot;
     } else if (states_[k].active) {
-        const Eigen::Vector2d n(base_.normal[0], base_.normal[1]);
+        const Eigen::Vector2d n = normal_of(sp);
         t.topLeftCorner<2, 2>() = sp.ky * n * n.transpose();
     }
     return t;

@@ -2,8 +2,10 @@
 // contact with a straight rigid base by the penalty method. A bilateral spring always acts:
 // f = Kb·u. A unilateral spring acts along the base normal n only while the node touches or
 // penetrates the base, gap g = (x − p)·n ≤ 0 (equality included, so a ring that starts on the
-// base is held): f = k·g·n, tangent k·n nᵀ. The active set is re-read from the current
-// positions at every evaluation; the driver decides when it has settled.
+// base is held): f = k·g·n, tangent k·n nᵀ. An anchored unilateral spring (a tensionless
+// Winkler bed) measures g = u·n from the node's initial position along its own direction n.
+// The active set is re-read from the current positions at every evaluation; the driver
+// decides when it has settled.
 #pragma once
 
 #include "model/model.hpp"
@@ -45,6 +47,9 @@ public:
     int active_contacts() const;
 
 private:
+    // The unit direction a unilateral spring pushes: its own (anchored) or the base's normal.
+    Eigen::Vector2d normal_of(const FoundationSpring& spring) const;
+
     std::vector<FoundationSpring> springs_;
     std::vector<Node> nodes_;
     BaseLine base_;

@@ -89,13 +89,17 @@ struct BaseLine {
 };
 
 // Discrete foundation spring at a node (seed eq. 5): Kb = diag(kx, ky, kθ). A unilateral
-// spring pushes along the base normal only, and only while the node touches the base.
+// spring pushes along the base normal only, and only while the node touches the base. An
+// anchored one (a tensionless Winkler bed) has no base line: it pushes with stiffness ky along
+// its own `direction` while the node has moved against it from its initial position.
 struct FoundationSpring {
     int node = 0;
     double kx = 0.0;
     double ky = 0.0;
     double krot = 0.0;
     bool unilateral = false;
+    bool anchored = false;                       // unilateral, against the node's initial position
+    std::array<double, 2> direction{0.0, 1.0};   // anchored: the unit direction the bed pushes
 };
 
 enum class Scheme { load_control, displacement_control, arc_length };

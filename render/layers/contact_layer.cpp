@@ -55,7 +55,7 @@ public:
     std::string note() const override {
         char text[64];
         std::snprintf(text, sizeof text, "%.4g", largest_);
-        return "longest arrow: " + std::string(text) + "\n(largest in the run)";
+        return "longest: " + std::string(text) + "\n(largest in the run)";
     }
 
 private:

@@ -69,7 +69,7 @@ public:
 
     std::string note() const override {
         std::string text;
-        if (summary_.max_load_force > 0) text = "longest arrow: " + short_number(summary_.max_load_force);
+        if (summary_.max_load_force > 0) text = "longest: " + short_number(summary_.max_load_force);
         if (summary_.max_load_moment > 0)
             text += (text.empty() ? "" : ", ") + std::string("moment ") + short_number(summary_.max_load_moment);
         return text + "\n(largest in the run)";
