@@ -2,6 +2,7 @@
 
 #include "render_error.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -14,6 +15,7 @@ void add_render_options(po::options_description& options) {
         ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
         ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
+        ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
         ("no-animation", "PNG frames only, no GIF");
 }
 
@@ -31,6 +33,23 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
         return bad_input;
     }
     options.field = vm["field"].as<std::string>();
+    const std::string magnify = vm["magnify"].as<std::string>();
+    if (magnify == "auto") {
+        options.magnify = 0.0;
+    } else {
+        std::size_t used = 0;
+        double k = 0.0;
+        try {
+            k = std::stod(magnify, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != magnify.size() || !(k > 0.0) || !std::isfinite(k)) {
+            std::cerr << "plastica: --magnify takes auto or a positive factor, e.g. 20 (got '" << magnify << "')\n";
+            return bad_input;
+        }
+        options.magnify = k;
+    }
     if (vm.count("overlay")) options.overlays = vm["overlay"].as<std::vector<std::string>>();
     options.animation = vm.count("no-animation") == 0;
     auto split = [](const std::string& text) {

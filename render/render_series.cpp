@@ -67,7 +67,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
                           " is outside 64x64 … 8192x8192");
     if (options.every < 1) throw RenderError("--every takes a whole number ≥ 1");
     const ResultSeries series = open_series(folder_or_pvd);
-    const SeriesSummary summary = summarise(series, options.field);
+    const SeriesSummary summary = summarise(series, options.field, options.magnify);
     std::vector<SeriesSummary> overlays;
     for (const std::string& other : options.overlays) overlays.push_back(summarise(open_series(other), "displacement"));
 
@@ -79,7 +79,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
 
     vtkSmartPointer<vtkPolyData> base;
     if (!series.base_file.empty()) base = read_base(series.base_file);
-    auto first = read_step(series.steps.front().file);
+    auto first = magnified(read_step(series.steps.front().file), summary.magnify);
     FrameComposer composer(summary, first, base, options.width, options.height, options.hide);
 
     const auto steps = chosen_steps(summary, options);
@@ -88,7 +88,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     std::future<void> encoding;
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::size_t index = steps[k];
-        auto grid = index == 0 ? first : read_step(series.steps[index].file);
+        auto grid = index == 0 ? first : magnified(read_step(series.steps[index].file), summary.magnify);
         vtkSmartPointer<vtkImageData> image = composer.draw(grid, index);
         if (sheet.wants(k)) sheet.keep(k, image);
         if (encoding.valid()) encoding.get(); // one frame in flight at a time: memory stays flat

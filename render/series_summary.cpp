@@ -5,6 +5,7 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -46,15 +47,64 @@ double tuple_magnitude(vtkDataArray* array, long long i) {
     return std::sqrt(sum);
 }
 
-SeriesSummary summarise(const ResultSeries& series, const std::string& requested) {
+namespace {
+
+// 1, 2 or 5 times a power of ten, at most x.
+double round_down_nicely(double x) {
+    const double decade = std::pow(10.0, std::floor(std::log10(x)));
+    for (double m : {5.0, 2.0, 1.0})
+        if (m * decade <= x) return m * decade;
+    return decade;
+}
+
+// The factor for magnify = 0 (see the header), from a pass over the displacements.
+double chosen_magnification(const ResultSeries& series) {
+    double largest = 0.0, b[4] = {1e300, -1e300, 1e300, -1e300};
+    for (const SeriesStep& step : series.steps) {
+        auto grid = read_step(step.file);
+        vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
+        vtkDataArray* x0 = grid->GetPointData()->GetArray("initial_position");
+        if (grid->GetPointData()->GetArray("contact_force") || !u || !x0) return 1.0;
+        for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i) {
+            largest = std::max(largest, std::hypot(u->GetComponent(i, 0), u->GetComponent(i, 1)));
+            b[0] = std::min(b[0], x0->GetComponent(i, 0)), b[1] = std::max(b[1], x0->GetComponent(i, 0));
+            b[2] = std::min(b[2], x0->GetComponent(i, 1)), b[3] = std::max(b[3], x0->GetComponent(i, 1));
+        }
+    }
+    const double size = std::max(b[1] - b[0], b[3] - b[2]);
+    if (!(largest > 0.0) || largest >= 0.02 * size) return 1.0;
+    return std::max(1.0, round_down_nicely(0.1 * size / largest));
+}
+
+} // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> magnified(vtkUnstructuredGrid* step, double k) {
+    if (k == 1.0) return step;
+    vtkDataArray* u = step->GetPointData()->GetArray("displacement");
+    vtkDataArray* x0 = step->GetPointData()->GetArray("initial_position");
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    grid->ShallowCopy(step);
+    if (!u || !x0) return grid;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(step->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i)
+        points->SetPoint(i, x0->GetComponent(i, 0) + k * u->GetComponent(i, 0), x0->GetComponent(i, 1) + k * u->GetComponent(i, 1), 0.0);
+    grid->SetPoints(points);
+    return grid;
+}
+
+SeriesSummary summarise(const ResultSeries& series, const std::string& requested, double magnify) {
     SeriesSummary s;
+    if (!(magnify >= 0.0) || !std::isfinite(magnify)) throw RenderError("--magnify takes 'auto' or a positive factor");
+    s.magnify = magnify == 0.0 ? chosen_magnification(series) : magnify;
     std::string field = requested;
     const double inf = std::numeric_limits<double>::infinity();
     double b[4] = {inf, -inf, inf, -inf};
     double range[2] = {inf, -inf};
     for (std::size_t k = 0; k < series.steps.size(); ++k) {
         const std::string& file = series.steps[k].file;
-        auto grid = read_step(file);
+        auto grid = magnified(read_step(file), s.magnify);
         if (k == 0) {
             s.scene = field_text(grid, "scene", "result");
             s.title = field_text(grid, "title");

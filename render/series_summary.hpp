@@ -7,10 +7,13 @@
 
 #include "result_series.hpp"
 
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
 class vtkDataArray;
+class vtkUnstructuredGrid;
 
 namespace plastica::render {
 
@@ -46,10 +49,17 @@ struct SeriesSummary {
     // Sides of the structure the load arrows come from (their tails): bits 1 left, 2 right,
     // 4 below, 8 above.
     int load_sides = 0;
+    double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
 };
 
 // Throws RenderError naming the step file, or listing the arrays when `field` is not one of them.
-SeriesSummary summarise(const ResultSeries& series, const std::string& field);
+// magnify: the factor displacements are drawn with; 0 chooses one: 1 when the largest
+// displacement is at least 2 % of the structure's size or the structure meets a rigid base
+// (magnified, it would seem to pass through it), else a round number that makes it about 10 %.
+SeriesSummary summarise(const ResultSeries& series, const std::string& field, double magnify = 1.0);
+
+// The step's grid with its points at x0 + k·u (the step itself when k = 1).
+vtkSmartPointer<vtkUnstructuredGrid> magnified(vtkUnstructuredGrid* step, double k);
 
 // Whether a point of a half model lies on its mirror line: a support there states symmetry,
 // and a load there is half of the whole structure's.

@@ -221,6 +221,10 @@ void StructureView::add_legend(double text_scale) {
             y -= 34 * s;
         }
     }
+    if (summary_.magnify != 1.0) {
+        add_text("displacements × " + format("%g", summary_.magnify), 13 * s, x, y + 8 * s, true);
+        y -= 26 * s;
+    }
     // Under the entries (at the foot of the view when they are few).
     if (summary_.mirrored)
         add_text("half model,\ndrawn mirrored\nabout x = " + format("%g", summary_.mirror_x), 12 * s, x,

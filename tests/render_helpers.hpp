@@ -18,8 +18,13 @@ namespace fs = std::filesystem;
 
 // Runs models/<scene>.toml writing every k-th step into a folder named by `tag` (test cases run
 // in parallel processes, each needs its own folder).
+inline fs::path solved_series_of(Model model, int every, const std::string& tag);
+
 inline fs::path solved_series(const std::string& scene, int every, const std::string& tag) {
-    Model model = read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/" + scene + ".toml");
+    return solved_series_of(read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/" + scene + ".toml"), every, tag);
+}
+
+inline fs::path solved_series_of(Model model, int every, const std::string& tag) {
     const fs::path folder = fs::temp_directory_path() / ("plastica_render_" + tag);
     fs::remove_all(folder);
     VtuSeriesWriter writer(model, folder.string(), {every, SeriesTime::step});

@@ -6,6 +6,8 @@
 #include "png_file.hpp"
 #include "render_error.hpp"
 #include "render_series.hpp"
+#include "result_series.hpp"
+#include "series_summary.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -145,6 +147,37 @@ TEST_CASE("Supports and loads are drawn where the scene has them, and --hide lea
     frame = read_png((ring / "pictures" / "frames" / "frame_000200.png").string());
     CHECK(count_pixels(frame, support) == 0);
     CHECK(count_pixels(frame, load, 0, structure_right, band_bottom, middle) > 20);
+}
+
+TEST_CASE("A stiff structure drawn with --magnify shows its displacements enlarged", "[render]") {
+    unsetenv("DISPLAY");
+    // A cantilever of length 10 whose tip moves down by 0.01 (PL³/3EI): 0.1 % of its length.
+    const Model model = read_scene_text(
+        "[scene]\nname = \"stiff\"\n[[material]]\nname = \"m\"\nE = 1.0e6\n[[section]]\nname = \"s\"\nmaterial = \"m\"\n"
+        "A = 1.0\nI = 1.0\n[[line]]\nstart = [0.0, 0.0]\nend = [10.0, 0.0]\nelements = 10\nsection = \"s\"\n"
+        "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[load]]\nat = [10.0, 0.0]\nfy = -30.0\n"
+        "[analysis]\nscheme = \"load_control\"\nincrement = 1.0\ntarget_load_factor = 1.0\n",
+        "stiff.toml");
+    const fs::path series = solved_series_of(model, 1, "stiff");
+    const SeriesSummary true_scale = summarise(open_series(series.string()), "", 1.0);
+    const SeriesSummary chosen = summarise(open_series(series.string()), "", 0.0);
+    // The tip deflection 0.01 becomes about 10 % of the size: × 100.
+    CHECK(true_scale.magnify == 1.0);
+    CHECK(chosen.magnify == 100.0);
+    CHECK(chosen.bounds[2] == Approx(-1.0).epsilon(1e-3));
+    CHECK(true_scale.bounds[2] == Approx(-0.01).epsilon(1e-3));
+    // Drawn at true scale the deformed ribbon hides the initial shape; magnified, it shows.
+    const auto initial = [](Pixel p) { return is(p, colour::initial_shape); };
+    render_series(series.string(), small(series / "true"));
+    RenderOptions enlarged = small(series / "enlarged");
+    enlarged.magnify = 0.0;
+    render_series(series.string(), enlarged);
+    auto flat = read_png((series / "true" / "frames" / "frame_000001.png").string());
+    auto bent = read_png((series / "enlarged" / "frames" / "frame_000001.png").string());
+    CHECK(count_pixels(bent, initial, 0, structure_right, band_bottom, 1) > 3 * count_pixels(flat, initial, 0, structure_right, band_bottom, 1) + 100);
+    // A scene on a rigid base keeps its true scale: magnified, it would seem to pass through.
+    const fs::path ring = solved_series("ring_elastic", 100, "magnify_ring");
+    CHECK(summarise(open_series(ring.string()), "", 0.0).magnify == 1.0);
 }
 
 TEST_CASE("The chart's curve rises where the load rises", "[render]") {
