@@ -102,9 +102,10 @@ public:
         read_prescribed(top);
         read_foundations(top);
         read_analysis(top);
+        read_stages(top);
         read_report(top);
         top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
-                    "load", "distributed_load", "prescribed", "foundation", "analysis", "report"});
+                    "load", "distributed_load", "prescribed", "foundation", "analysis", "stage", "report"});
         if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty())
             throw SceneError(file_, 1, "load", "the scene has no [[load]], no [[distributed_load]] and no [[prescribed]] displacement");
         return std::move(model_);
@@ -673,6 +674,41 @@ private:
             out[k] = {sign * nx / length, sign * ny / length};
         }
         return out;
+    }
+
+    // Stages after [analysis]'s, each under load or displacement control toward a target on
+    // either side of where the previous one ended (unload to λ = 0, reload, reverse).
+    void read_stages(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "stage");
+        const AnalysisSpec& a = model_.analysis;
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("stage", i));
+            StageSpec s;
+            const std::string scheme = r.choice("scheme", {"load_control", "displacement_control"}, "load_control");
+            s.scheme = scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
+            s.increment = r.positive("increment");
+            s.adaptive = r.boolean_or("adaptive", false);
+            if (r.has("target_load_factor") && r.has("target_displacement"))
+                r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");
+            if (r.has("target_load_factor")) s.target_load_factor = r.number("target_load_factor");
+            if (r.has("target_displacement")) s.target_displacement = r.number("target_displacement");
+            if (!s.target_load_factor && !s.target_displacement)
+                r.fail("", "missing a stop: 'target_load_factor' or 'target_displacement'");
+            if (s.scheme == Scheme::load_control && s.target_displacement)
+                r.fail("target_displacement", "a load-controlled stage stops at a 'target_load_factor'");
+            if (s.scheme == Scheme::displacement_control && s.target_load_factor)
+                r.fail("target_load_factor", "a displacement-controlled stage stops at a 'target_displacement'");
+            if (s.scheme == Scheme::displacement_control) {
+                for (const Support& sup : model_.supports)
+                    if (sup.node == a.control.node && sup.fixed[a.control.dof])
+                        r.fail("scheme", "the controlled DOF is supported ([analysis] names it)");
+                for (const PrescribedDisplacement& p : model_.prescribed)
+                    if (p.node == a.control.node && p.dof == a.control.dof)
+                        r.fail("scheme", "the controlled DOF has a prescribed displacement ([analysis] names it)");
+            }
+            r.finish({"scheme", "increment", "adaptive", "target_load_factor", "target_displacement"});
+            model_.stages.push_back(s);
+        }
     }
 
     std::string describe_node(int n) const {

@@ -169,6 +169,20 @@ std::vector<StabilityCase> robustness_cases() {
                          return std::abs(carried - 0.5 * r.load) <= 1e-4 * r.load
                                     ? "" : "soil carries " + std::to_string(carried) + " of " + std::to_string(0.5 * r.load);
                      }});
+    cases.push_back({"inelastic ring in stages", "pushed to 100, released, pushed again", embedded_scene("gallery/ring_released"),
+                     done, [](const Steps& steps, const RunSummary&) -> std::string {
+                         // Released, it keeps a permanent flattening; pushed again to 100 it carries
+                         // the load it had there (the unloading and reloading are elastic).
+                         double first = 0.0, released = -1.0;
+                         for (const StepResult& r : steps) {
+                             if (first == 0.0 && r.control_displacement >= 100.0 - 1e-9) first = r.load;
+                             if (first > 0.0 && released < 0.0 && r.load_factor == 0.0) released = r.control_displacement;
+                         }
+                         if (!(released > 10.0)) return "released at " + std::to_string(released);
+                         const double again = steps.back().load;
+                         return std::abs(again - first) <= 5e-3 * first
+                                    ? "" : "P(100) " + std::to_string(first) + " first, " + std::to_string(again) + " again";
+                     }});
     cases.push_back({"Lee's frame, arc length", "through the limit and the snap-back", embedded_scene("gallery/lee_frame"),
                      done, [](const Steps& steps, const RunSummary&) -> std::string {
                          // The limit load 18.5 EI/L² (1.8659 for this 10 + 10 mesh), then the load

@@ -143,6 +143,8 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"line load without a control point", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"all\"\nwy = -1.0"), "missing 'control_at': a scene loaded only by [[distributed_load]]s", 22},
         {"direction of a bilateral foundation", good + "[[foundation]]\non = \"all\"\nky = 1.0\ndirection = [0.0, 1.0]\n", "'foundation[1].direction': a direction belongs to a tensionless bed", 29},
         {"tensionless bed with kx", good + "[[foundation]]\nkind = \"tensionless\"\non = \"all\"\nky = 1.0\nkx = 1.0\n", "'foundation[1].kx': a tensionless bed pushes along its 'direction' only", 30},
+        {"stage without a stop", good + "[[stage]]\nincrement = 0.1\n", "'stage[1]': missing a stop", 26},
+        {"load-controlled stage to a displacement", good + "[[stage]]\nincrement = 0.1\ntarget_displacement = 0.0\n", "'stage[1].target_displacement': a load-controlled stage stops at a 'target_load_factor'", 28},
         {"a table nothing reads", good + "[render]\nfield = \"gap\"\n", "'render': unknown key", 26},
     };
     for (const Case& c : cases) {

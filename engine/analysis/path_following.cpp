@@ -20,7 +20,8 @@ Eigen::VectorXd nodal_loads(const Model& model) {
 }
 } // namespace
 
-PathFollowing::PathFollowing(const Model& model) : model_(model), system_(model, nodal_loads(model)) {
+PathFollowing::PathFollowing(const Model& model)
+    : model_(model), analysis_(model.analysis), system_(model, nodal_loads(model)) {
     const int n = model.dof_count();
     u_ = Eigen::VectorXd::Zero(n);
     ubar_ = Eigen::VectorXd::Zero(n);
@@ -51,7 +52,7 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
 }
 
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control) {
-    const AnalysisSpec& a = model_.analysis;
+    const AnalysisSpec& a = analysis_;
     StructureProblem problem(system_, u_, lambda_, ubar_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
     NewtonSettings settings;
@@ -107,7 +108,7 @@ std::string PathFollowing::initial_mechanism() {
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {
     const auto start = std::chrono::steady_clock::now();
-    const AnalysisSpec& a = model_.analysis;
+    const AnalysisSpec& a = analysis_;
     RunSummary summary;
     auto publish = [&](const StepResult& r) {
         for (const StepObserver& o : observers) o(r);
@@ -196,15 +197,14 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
         }
 
         h = next_increment(h, step_h, outcome);
-        // A target counts as reached within round-off of the increment that led to it.
-        const double slack = 1e-9 * std::abs(a.initial_increment);
-        const bool reached_lambda = a.target_load_factor &&
-            std::abs(lambda_) >= std::abs(*a.target_load_factor) - slack;
-        const bool reached_displacement = a.target_displacement &&
-            control_value(u_) >= *a.target_displacement - slack;
-        if (reached_lambda || reached_displacement) {
+        if (target_reached()) {
+            if (stage_ < model_.stages.size()) {
+                h = begin_stage(stage_);
+                continue;
+            }
             summary.status = RunStatus::completed;
-            summary.reason = reached_lambda ? "target load factor reached" : "target displacement reached";
+            summary.reason = a.target_load_factor ? "target load factor reached" : "target displacement reached";
+            if (stage_ > 0) summary.reason += " (" + std::to_string(stage_ + 1) + " stages)";
             break;
         }
     }
@@ -213,8 +213,38 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
     return summary;
 }
 
+bool PathFollowing::target_reached() const {
+    const AnalysisSpec& a = analysis_;
+    // A target counts as reached within round-off of the increment that led to it.
+    const double slack = 1e-9 * std::abs(a.initial_increment);
+    if (stage_ == 0) {
+        if (a.target_load_factor) return std::abs(lambda_) >= std::abs(*a.target_load_factor) - slack;
+        return a.target_displacement && control_value(u_) >= *a.target_displacement - slack;
+    }
+    // Later stages go either way: reached once the value has come to the target.
+    const double value = a.target_load_factor ? lambda_ : control_value(u_);
+    const double target = a.target_load_factor ? *a.target_load_factor : *a.target_displacement;
+    return (value - target) * direction_ >= -slack;
+}
+
+double PathFollowing::begin_stage(std::size_t k) {
+    const StageSpec& s = model_.stages[k];
+    ++stage_;
+    analysis_.scheme = s.scheme;
+    analysis_.initial_increment = s.increment;
+    analysis_.adaptive = s.adaptive;
+    analysis_.min_increment = std::min(model_.analysis.min_increment, 1e-6 * s.increment);
+    analysis_.max_increment = 10.0 * s.increment;
+    analysis_.target_load_factor = s.target_load_factor;
+    analysis_.target_displacement = s.target_displacement;
+    const double value = s.target_load_factor ? lambda_ : control_value(u_);
+    const double target = s.target_load_factor ? *s.target_load_factor : *s.target_displacement;
+    direction_ = target >= value ? 1.0 : -1.0;
+    return direction_ * s.increment;
+}
+
 double PathFollowing::next_increment(double h, double used, const NewtonResult& outcome) const {
-    const AnalysisSpec& a = model_.analysis;
+    const AnalysisSpec& a = analysis_;
     const double sign = h >= 0.0 ? 1.0 : -1.0;
     double next = std::abs(h);
     if (a.adaptive) {
@@ -234,7 +264,7 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
 }
 
 std::string PathFollowing::check_penetration() const {
-    if (model_.analysis.allow_crossing) return {};
+    if (analysis_.allow_crossing) return {};
     const std::string found = find_penetration(model_, u_);
     if (found.empty()) return found;
     return "step " + std::to_string(step_) + ": " + found;

@@ -62,8 +62,16 @@ private:
     std::string check_penetration() const;
     double control_value(const Eigen::VectorXd& u) const;
     StepResult make_result(int step, int iterations, Acceptance rule) const;
+    // Whether the current stage's target is reached (within round-off of its increment).
+    bool target_reached() const;
+    // Makes stages[k] of the model the current stage; returns its first increment, signed
+    // toward its target.
+    double begin_stage(std::size_t k);
 
     Model model_;
+    AnalysisSpec analysis_;   // the current stage: [analysis], then each [[stage]] over it
+    std::size_t stage_ = 0;   // 0: [analysis]; k: the model's stages[k − 1]
+    double direction_ = 1.0;  // the sign of travel toward the current stage's target
     StructuralSystem system_;
     LinearSolver solver_;
     Eigen::VectorXd u_;     // full displacement vector

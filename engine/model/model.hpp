@@ -129,6 +129,17 @@ struct AnalysisSpec {
     bool allow_crossing = false;
 };
 
+// A further stage of the analysis after [analysis]'s: the path goes on from where the previous
+// stage ended, under load or displacement control, toward a target on either side (unloading
+// to λ = 0, reloading, reversing).
+struct StageSpec {
+    Scheme scheme = Scheme::load_control;
+    double increment = 0.1;                    // |Δλ| or |Δu| of the control DOF
+    bool adaptive = false;
+    std::optional<double> target_load_factor;
+    std::optional<double> target_displacement; // on the control DOF, signed as reported
+};
+
 struct ReportSpec {
     // The reported load: λ times the total of the reference loads along their common direction
     // (forces all parallel, or moments only), or λ itself where they are not parallel (or the
@@ -155,6 +166,7 @@ struct Model {
     std::vector<FoundationSpring> springs;
     std::optional<BaseLine> base; // required when any spring is unilateral
     AnalysisSpec analysis;
+    std::vector<StageSpec> stages; // after the first ([analysis]), in order
     ReportSpec report;
 
     int dof_count() const { return dofs_per_node * static_cast<int>(nodes.size()); }
