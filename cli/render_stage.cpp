@@ -13,6 +13,7 @@ void add_render_options(po::options_description& options) {
         ("size", po::value<std::string>()->default_value("1280x720"), "picture size WIDTHxHEIGHT in pixels")
         ("field", po::value<std::string>()->default_value(""), "point or cell array that colours the structure (default: yielded_share with distributed plasticity, else bending_moment)")
         ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
+        ("overlay-csv", po::value<std::vector<std::string>>()->composing(), "FILE:label, points (displacement, load per line) drawn over chart.png, e.g. digitised from a paper (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
         ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
         ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
@@ -51,6 +52,7 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
         options.magnify = k;
     }
     if (vm.count("overlay")) options.overlays = vm["overlay"].as<std::vector<std::string>>();
+    if (vm.count("overlay-csv")) options.reference_points = vm["overlay-csv"].as<std::vector<std::string>>();
     options.animation = vm.count("no-animation") == 0;
     auto split = [](const std::string& text) {
         std::vector<std::string> items;

@@ -164,7 +164,8 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
     return window.capture();
 }
 
-vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height) {
+vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height,
+                                               const std::vector<ReferencePoints>& references) {
     const SeriesSummary& main = *runs.front();
     ChartFigure f;
     f.title = main.load_label + " against " + main.displacement_label + ": " + scene_heading(main);
@@ -180,6 +181,10 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
         f.series.push_back({runs.size() > 1 ? runs[k]->scene : "", column(runs[k]->curve, runs[k]->curve.size(), false),
                             column(runs[k]->curve, runs[k]->curve.size(), true), c, k == 0 ? 3.0f : 2.0f});
     }
+    // Reference points as open markers in colours no run or event uses.
+    const Rgb marks[] = {{0, 0, 0}, {120, 60, 160}, {190, 120, 0}, {0, 110, 110}};
+    for (std::size_t k = 0; k < references.size(); ++k)
+        f.series.push_back({references[k].label, references[k].displacement, references[k].load, marks[k % 4], 9.0f, true});
     // Events of the main run that explain the shape of its curve.
     auto mark = [&](const char* label, Rgb colour, auto happened) {
         for (const CurvePoint& c : main.curve)
@@ -192,7 +197,7 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     bool marked = false;
     if (main.inelastic) marked |= mark("first yield", colour::hinge_yielding_high, [](const CurvePoint& c) { return c.hinge_count > 0; });
     if (main.unilateral) marked |= mark("contact spreads", colour::contact_force, [](const CurvePoint& c) { return c.contact_count > 1; });
-    f.legend = runs.size() > 1 || marked;
+    f.legend = runs.size() > 1 || marked || !references.empty();
     return draw_chart(f);
 }
 

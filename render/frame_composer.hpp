@@ -6,6 +6,7 @@
 
 #include "load_chart.hpp"
 #include "offscreen_window.hpp"
+#include "reference_points.hpp"
 #include "series_summary.hpp"
 #include "structure_view.hpp"
 
@@ -56,7 +57,9 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& figure);
 
 // The whole load–displacement curve of one or more runs (the first is the main one, its first
 // yield and contact spreading marked), with a legend when there is more than one run.
-vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height);
+// Reference points (published or measured) are drawn as markers, each set in the legend.
+vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height,
+                                               const std::vector<ReferencePoints>& references = {});
 
 // "%.4g" without trailing noise.
 std::string number(double value);

@@ -1,4 +1,5 @@
 #include "render_series.hpp"
+#include "reference_points.hpp"
 #include "animation.hpp"
 #include "contact_sheet.hpp"
 #include "frame_composer.hpp"
@@ -70,6 +71,8 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     const SeriesSummary summary = summarise(series, options.field, options.magnify);
     std::vector<SeriesSummary> overlays;
     for (const std::string& other : options.overlays) overlays.push_back(summarise(open_series(other), "displacement"));
+    std::vector<ReferencePoints> references;
+    for (const std::string& file : options.reference_points) references.push_back(read_reference_points(file));
 
     RenderReport report;
     report.output = options.output.empty() ? series.folder : options.output;
@@ -105,7 +108,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
 
     std::vector<const SeriesSummary*> runs{&summary};
     for (const SeriesSummary& o : overlays) runs.push_back(&o);
-    write_png(draw_curve_chart(runs, options.width, options.height), (out / "chart.png").string());
+    write_png(draw_curve_chart(runs, options.width, options.height, references), (out / "chart.png").string());
     if (auto image = sheet.compose()) write_png(image, (out / "contact_sheet.png").string());
     if (options.animation) {
         const AnimationResult gif = write_gif(frames.string(), (out / (summary.scene + ".gif")).string());

@@ -180,6 +180,25 @@ TEST_CASE("A stiff structure drawn with --magnify shows its displacements enlarg
     CHECK(summarise(open_series(ring.string()), "", 0.0).magnify == 1.0);
 }
 
+TEST_CASE("Reference points from a CSV join the chart as markers; a bad line is named", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_elastic", 200, "reference_points");
+    const fs::path csv = series / "table.csv";
+    std::ofstream(csv) << "# points of the README's table\ndisplacement,P\n10, 0.0626\n40, 0.2117\n80, 0.3786\n";
+    RenderOptions plain = small(series / "plain"), with = small(series / "with");
+    with.reference_points = {csv.string() + ":README table"};
+    render_series(series.string(), plain);
+    render_series(series.string(), with);
+    const auto black = [](Pixel p) { return p.r == 0 && p.g == 0 && p.b == 0; };
+    auto before = read_png((series / "plain" / "chart.png").string());
+    auto after = read_png((series / "with" / "chart.png").string());
+    CHECK(count_pixels(before, black) == 0);
+    CHECK(count_pixels(after, black) > 3 * 20); // three markers and the legend's
+    std::ofstream(series / "bad.csv") << "displacement,P\n10, 0.06\n40, none\n";
+    with.reference_points = {(series / "bad.csv").string()};
+    CHECK_THROWS_WITH(render_series(series.string(), with), Catch::Contains("bad.csv:3: expected 'displacement, load'"));
+}
+
 TEST_CASE("The chart's curve rises where the load rises", "[render]") {
     unsetenv("DISPLAY");
     const fs::path series = solved_series("ring_elastic", 10, "chart");
