@@ -1,5 +1,6 @@
 #include "render_stage.hpp"
 
+#include "progress.hpp"
 #include "render_error.hpp"
 
 #include <cmath>
@@ -79,7 +80,14 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
 
 int render_and_report(const std::string& series, const render::RenderOptions& options) {
     try {
-        const render::RenderReport r = render::render_series(series, options);
+        render::RenderOptions with_progress = options;
+        Progress progress("drawing", 25);
+        if (!options.quiet)
+            with_progress.on_frame = [&progress](int done, int total) {
+                progress.update(done, static_cast<double>(done) / total, "frame " + std::to_string(done) + " of " + std::to_string(total));
+            };
+        const render::RenderReport r = render::render_series(series, with_progress);
+        progress.finish();
         if (!options.quiet) {
             std::cerr << "rendered " << r.frames << " frames in " << r.seconds << " s (" << r.frames_per_second
                       << " frames per second, " << r.gl_renderer << ") into " << r.output << "/frames\n";

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "output_folder.hpp"
+#include "progress.hpp"
 #include "render_stage.hpp"
 
 #include "analysis/path_following.hpp"
@@ -130,15 +131,23 @@ int run_command(const Args& args) {
     for (const Override& o : overrides) report.overrides.emplace_back(o.path, o.value);
     report.model = &model;
     const bool quiet = vm.count("quiet") > 0;
+    Progress progress("solving", 20);
+    const AnalysisSpec& a = model.analysis;
     auto track = [&](const StepResult& r) {
         report.last = r;
         if (r.load > report.peak_load) {
             report.peak_load = r.load;
             report.peak_load_displacement = r.control_displacement;
         }
-        if (!quiet && r.step % 20 == 0)
-            std::cerr << "step " << r.step << "  load " << r.load << "  displacement "
-                      << r.control_displacement << "  iterations " << r.iterations << "\n";
+        if (quiet) return;
+        // The share done, where one target ends the run.
+        double done = -1.0;
+        if (model.stages.empty() && a.target_displacement) done = r.control_displacement / *a.target_displacement;
+        if (model.stages.empty() && a.target_load_factor) done = std::abs(r.load_factor / *a.target_load_factor);
+        std::ostringstream status;
+        status << "step " << r.step << "  " << model.report.load_label << " " << r.load + 0.0 << "  "
+               << model.report.displacement_label << " " << r.control_displacement + 0.0 << "  iterations " << r.iterations;
+        progress.update(r.step, done, status.str());
     };
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
@@ -148,6 +157,7 @@ int run_command(const Args& args) {
     std::vector<StepObserver> observers{std::ref(curve), track};
     if (series) observers.emplace_back(std::ref(*series));
     report.summary = analysis.run(observers, control);
+    progress.finish();
     if (series) series->finish();
     report.stage_seconds = {{"read", read_seconds}, {"analysis_and_output", seconds_since(t1)}};
     write_run_report((fs::path(folder) / "run.json").string(), report);

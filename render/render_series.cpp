@@ -97,8 +97,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
         if (encoding.valid()) encoding.get(); // one frame in flight at a time: memory stays flat
         const std::string path = (frames / frame_name(summary.curve[index].step)).string();
         encoding = std::async(std::launch::async, [image, path] { write_png(image, path); });
-        if (!options.quiet && (k % 25 == 0 || k + 1 == steps.size()))
-            std::cerr << "frame " << k + 1 << " of " << steps.size() << "\n";
+        if (options.on_frame) options.on_frame(static_cast<int>(k + 1), static_cast<int>(steps.size()));
     }
     if (encoding.valid()) encoding.get();
     report.frames = static_cast<int>(steps.size());

@@ -4,6 +4,7 @@
 // one frame is encoded on a second thread while the next one draws.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ struct RenderOptions {
     double magnify = 1.0;                 // displacements drawn × this; 0: chosen (see summarise)
     bool animation = true;
     bool quiet = false;
+    // Called after each frame with the frames done and the total (progress display); may be empty.
+    std::function<void(int done, int total)> on_frame;
 };
 
 struct RenderReport {

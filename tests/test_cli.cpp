@@ -350,6 +350,15 @@ TEST_CASE("A series that would fill a disk is refused before the run, with the w
     // With --every large enough, or curves only, the same scene is accepted (not run here).
 }
 
+TEST_CASE("Progress goes to a log as plain lines, without a terminal's redrawing", "[cli]") {
+    const fs::path out = scratch("progress");
+    const Result r = plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render");
+    CHECK(r.code == 0);
+    CHECK_THAT(r.output, Catch::Contains("solving: step 20  P ") && Catch::Contains("top displacement 10"));
+    CHECK(r.output.find('\r') == std::string::npos);
+    CHECK(r.output.find("\033[K") == std::string::npos);
+}
+
 TEST_CASE("After a SIGKILL the folder still names its scene, and the same run may use it again", "[cli][signal]") {
     const fs::path dir = scratch("sigkill");
     fs::create_directories(dir);

@@ -1,0 +1,56 @@
+#include "progress.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace plastica::cli {
+
+std::string duration_text(double seconds) {
+    char text[32];
+    if (seconds < 10.0) std::snprintf(text, sizeof text, "%.1f s", seconds);
+    else if (seconds < 60.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
+    else std::snprintf(text, sizeof text, "%d min %02d s", static_cast<int>(seconds) / 60, static_cast<int>(seconds) % 60);
+    return text;
+}
+
+Progress::Progress(std::string what, int every)
+    : what_(std::move(what)), every_(every < 1 ? 1 : every), terminal_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()), last_(start_) {}
+
+Progress::~Progress() { finish(); }
+
+void Progress::update(int count, double done, const std::string& status) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!terminal_) {
+        if (count % every_ == 0) std::cerr << what_ << ": " << status << "\n";
+        return;
+    }
+    // Redrawn at most ten times a second: a fast run is not slowed by its own display.
+    if (open_ && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    std::string line = what_ + " ";
+    if (done >= 0.0) {
+        const double share = std::fmax(0.0, std::fmin(done, 1.0));
+        constexpr int width = 24;
+        const int filled = static_cast<int>(std::lround(share * width));
+        line += "[" + std::string(filled, '#') + std::string(width - filled, '-') + "] ";
+        char percent[16];
+        std::snprintf(percent, sizeof percent, "%3.0f %%  ", 100.0 * share);
+        line += percent;
+    }
+    line += status;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (done > 0.02 && done < 1.0) line += "  about " + duration_text(elapsed * (1.0 - done) / done) + " left";
+    std::cerr << "\r\033[K" << line << std::flush;
+    open_ = true;
+}
+
+void Progress::finish() {
+    if (open_) std::cerr << "\n";
+    open_ = false;
+}
+
+} // namespace plastica::cli
