@@ -50,10 +50,10 @@ std::string number(double value) {
 }
 
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
-                             const std::vector<std::string>& hidden)
+                             const std::vector<std::string>& hidden, double text_boost)
     : summary_(summary), window_(width, height),
-      chart_(summary.displacement_label, summary.load_label, text_scale(width, height)) {
-    const double s = text_scale(width, height);
+      chart_(summary.displacement_label, summary.load_label, text_boost * text_scale(width, height)) {
+    const double s = text_boost * text_scale(width, height);
     const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
                                   static_cast<int>(std::lround((1.0 - band) * height))};
     structure_ = std::make_unique<StructureView>(summary, make_layers(summary, first_step, base, hidden), structure_port, s);

@@ -25,9 +25,10 @@ namespace plastica::render {
 
 class FrameComposer {
 public:
-    // hidden: layers left out by name (layer_list.hpp).
+    // hidden: layers left out by name (layer_list.hpp); text_boost enlarges text and marks over
+    // their size for the picture (small pictures that must stay legible: the contact sheet).
     FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
-                  const std::vector<std::string>& hidden = {});
+                  const std::vector<std::string>& hidden = {}, double text_boost = 1.0);
     ~FrameComposer();
 
     // Draws step `index` of the summary's curve, whose data is `step`.

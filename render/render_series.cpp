@@ -86,14 +86,17 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     FrameComposer composer(summary, first, base, options.width, options.height, options.hide);
 
     const auto steps = chosen_steps(summary, options);
-    ContactSheet sheet(steps.size());
+    // The sheet's tiles are drawn at their own size with text a quarter larger, so that a
+    // tile's legend stays readable (a shrunken full frame's text is 6 pixels high).
+    ContactSheet sheet(steps.size(), 3, 3, 1.0);
+    FrameComposer tiles(summary, first, base, options.width / 2, options.height / 2, options.hide, 1.25);
     const auto t0 = std::chrono::steady_clock::now();
     std::future<void> encoding;
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::size_t index = steps[k];
         auto grid = index == 0 ? first : magnified(read_step(series.steps[index].file), summary.magnify);
         vtkSmartPointer<vtkImageData> image = composer.draw(grid, index);
-        if (sheet.wants(k)) sheet.keep(k, image);
+        if (sheet.wants(k)) sheet.keep(k, tiles.draw(grid, index));
         if (encoding.valid()) encoding.get(); // one frame in flight at a time: memory stays flat
         const std::string path = (frames / frame_name(summary.curve[index].step)).string();
         encoding = std::async(std::launch::async, [image, path] { write_png(image, path); });
