@@ -823,6 +823,11 @@ private:
         model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
         model_.report.exact = r.string_or("exact", "");
         if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x");
+        for (const auto& [key, unit] : {std::pair{"length_unit", &model_.report.length_unit}, std::pair{"force_unit", &model_.report.force_unit}}) {
+            *unit = r.string_or(key, "");
+            if (unit->size() > 16 || unit->find_first_of("\n\r\t") != std::string::npos)
+                r.fail(key, "expected a short unit name such as \"mm\" or \"kN\"");
+        }
         if (!model_.report.exact.empty() && model_.report.exact != "cantilever_tip_load")
             r.fail("exact", "the closed forms known are: cantilever_tip_load");
         if (model_.report.exact == "cantilever_tip_load" && !is_cantilever_with_tip_load())
@@ -835,7 +840,7 @@ private:
             for (const Node& n : model_.nodes) left = left || n.x < x0 - tol, right = right || n.x > x0 + tol;
             if (left && right) r.fail("mirror_x", "the structure lies on both sides of this line: a half model lies on one side");
         }
-        r.finish({"load", "load_scale", "load_label", "displacement_label", "exact", "mirror_x"});
+        r.finish({"load", "load_scale", "load_label", "displacement_label", "exact", "mirror_x", "length_unit", "force_unit"});
     }
 
     bool is_cantilever_with_tip_load() const {

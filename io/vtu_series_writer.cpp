@@ -41,6 +41,12 @@ bool has_bilateral(const Model& m) {
     return std::any_of(m.springs.begin(), m.springs.end(), [](const FoundationSpring& s) { return !s.unilateral; });
 }
 
+// force·length, force/length: the compound units of moments and pressures.
+std::string compound(const std::string& a, const char* op, const std::string& b) {
+    if (a.empty() || b.empty()) return {};
+    return a + op + b;
+}
+
 vtkSmartPointer<vtkDoubleArray> make_array(const char* name, int components, vtkIdType tuples) {
     auto a = vtkSmartPointer<vtkDoubleArray>::New();
     a->SetName(name);
@@ -72,6 +78,24 @@ void write_xml(Writer* writer, const std::string& path, Compression compression 
     }
     if (writer->Write() != 1) throw std::runtime_error("VTK could not write " + path);
     write_file_atomically(path, writer->GetOutputString());
+}
+
+// The units of the reported load (a force, a moment, a pressure, or none for the load factor)
+// and of the control displacement (a length, or radians for a rotation).
+std::pair<std::string, std::string> reported_units(const Model& m) {
+    const std::string& force = m.report.force_unit;
+    const std::string& length = m.report.length_unit;
+    std::string load = force;
+    if (m.report.measure == ReportSpec::Measure::factor) {
+        load.clear();
+    } else if (m.uniform_pressure_only()) {
+        load = compound(force, "/", length);
+    } else if (!m.loads.empty() && std::all_of(m.loads.begin(), m.loads.end(), [](const NodalLoad& l) {
+                   return l.value[0] == 0.0 && l.value[1] == 0.0;
+               })) {
+        load = compound(force, "·", length); // moments only
+    }
+    return {load, m.analysis.control.dof == 2 ? "rad" : length};
 }
 
 } // namespace
@@ -136,6 +160,8 @@ VtuSeriesWriter::VtuSeriesWriter(const Model& model, const std::string& director
     impl_->grid->SetPoints(points);
     impl_->grid->SetCells(VTK_LINE, lines);
     impl_->writer->SetInputData(impl_->grid);
+    const auto [load_unit, displacement_unit] = reported_units(model);
+    units_ = {load_unit, displacement_unit};
     write_base();
 }
 
@@ -336,9 +362,17 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     add_field(fd, "contact_count", r.contact_count);
     add_field(fd, "hinge_count", r.hinge_count);
     // Names for pictures: the render stage reads them from here, not from the scene file.
-    const std::pair<const char*, const std::string*> names[] = {
+    std::vector<std::pair<const char*, const std::string*>> names = {
         {"scene", &m.name}, {"title", &m.title},
         {"load_label", &m.report.load_label}, {"displacement_label", &m.report.displacement_label}};
+    // Units, when the scene names them: those of the reported load and displacement follow from
+    // what they measure.
+    if (!m.report.length_unit.empty() || !m.report.force_unit.empty()) {
+        names.push_back({"length_unit", &m.report.length_unit});
+        names.push_back({"force_unit", &m.report.force_unit});
+        names.push_back({"load_unit", &units_.load});
+        names.push_back({"displacement_unit", &units_.displacement});
+    }
     if (m.report.mirror_x) add_field(fd, "mirror_x", *m.report.mirror_x);
     for (const auto& [key, value] : names) {
         vtkNew<vtkStringArray> text;

@@ -59,6 +59,9 @@ private:
     std::string pvd_path_;
     SeriesOptions options_;
     std::vector<std::pair<double, std::string>> entries_; // time, relative file name
+    struct Units {
+        std::string load, displacement; // of the reported load and control displacement
+    } units_;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> pvd_{nullptr, &std::fclose};
     long pvd_tail_ = 0; // where the closing tags start
     bool has_base_file_ = false;

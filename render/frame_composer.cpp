@@ -37,6 +37,9 @@ std::vector<double> column(const std::vector<CurvePoint>& curve, std::size_t cou
 // scales by its width so that the legend column still holds its text.
 double text_scale(int width, int height) { return std::min(height / 720.0, width / 1280.0); }
 
+// " kN" after a value, or nothing.
+std::string unit_after(const std::string& unit) { return unit.empty() ? "" : " " + unit; }
+
 std::string scene_heading(const SeriesSummary& s) {
     return s.title.empty() ? s.scene : s.title + "  (" + s.scene + ")";
 }
@@ -52,7 +55,8 @@ std::string number(double value) {
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
                              const std::vector<std::string>& hidden, double text_boost)
     : summary_(summary), window_(width, height),
-      chart_(summary.displacement_label, summary.load_label, text_boost * text_scale(width, height)) {
+      chart_(with_unit(summary.displacement_label, summary.displacement_unit), with_unit(summary.load_label, summary.load_unit),
+             text_boost * text_scale(width, height)) {
     const double s = text_boost * text_scale(width, height);
     const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
                                   static_cast<int>(std::lround((1.0 - band) * height))};
@@ -91,8 +95,9 @@ FrameComposer::~FrameComposer() = default;
 vtkSmartPointer<vtkImageData> FrameComposer::draw(vtkUnstructuredGrid* step, std::size_t index) {
     const CurvePoint& c = summary_.curve.at(index);
     const std::string status = "step " + std::to_string(c.step) + " of " + std::to_string(summary_.curve.back().step) +
-                               "      " + summary_.load_label + " = " + number(c.load) + "      " +
-                               summary_.displacement_label + " = " + number(c.displacement);
+                               "      " + summary_.load_label + " = " + number(c.load) + unit_after(summary_.load_unit) +
+                               "      " + summary_.displacement_label + " = " + number(c.displacement) +
+                               unit_after(summary_.displacement_unit);
     status_->SetInput(status.c_str());
     structure_->show(step);
     // A line needs two points; the first step is the marker alone.
@@ -169,8 +174,8 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     const SeriesSummary& main = *runs.front();
     ChartFigure f;
     f.title = main.load_label + " against " + main.displacement_label + ": " + scene_heading(main);
-    f.x_label = main.displacement_label;
-    f.y_label = main.load_label;
+    f.x_label = with_unit(main.displacement_label, main.displacement_unit);
+    f.y_label = with_unit(main.load_label, main.load_unit);
     f.width = width;
     f.height = height;
     // The main run in the progress blue, drawn last so it stays on top; the others in colours

@@ -34,6 +34,24 @@ int count_state(vtkDataArray* states, int state) {
 
 } // namespace
 
+std::string with_unit(const std::string& label, const std::string& unit) {
+    return unit.empty() ? label : label + " (" + unit + ")";
+}
+
+std::string array_unit(const SeriesSummary& s, const std::string& array) {
+    if (s.length_unit.empty() && s.force_unit.empty()) return {};
+    const auto in = [&](std::initializer_list<const char*> names) {
+        return std::any_of(names.begin(), names.end(), [&](const char* n) { return array == n; });
+    };
+    if (in({"bending_moment", "moment_i", "moment_j", "section_moment"}))
+        return s.force_unit.empty() || s.length_unit.empty() ? "" : s.force_unit + "·" + s.length_unit;
+    if (in({"axial_force", "shear", "contact_force", "spring_force", "reaction", "applied_load"})) return s.force_unit;
+    if (in({"displacement", "gap", "initial_position"})) return s.length_unit;
+    if (in({"rotation"})) return "rad";
+    if (in({"section_curvature"})) return s.length_unit.empty() ? "" : "1/" + s.length_unit;
+    return {};
+}
+
 bool on_mirror_line(const SeriesSummary& summary, const double* initial_position) {
     const double x = initial_position[0];
     return summary.mirrored && std::abs(x - summary.mirror_x) <= 1e-9 * (1.0 + std::abs(x));
@@ -110,6 +128,10 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             s.title = field_text(grid, "title");
             s.load_label = field_text(grid, "load_label", "load");
             s.displacement_label = field_text(grid, "displacement_label", "control displacement");
+            s.length_unit = field_text(grid, "length_unit");
+            s.force_unit = field_text(grid, "force_unit");
+            s.load_unit = field_text(grid, "load_unit");
+            s.displacement_unit = field_text(grid, "displacement_unit");
             s.unilateral = grid->GetPointData()->GetArray("contact_force") != nullptr;
             s.inelastic = grid->GetCellData()->GetArray("hinge_state_i") != nullptr;
             if (grid->GetFieldData()->GetArray("mirror_x")) {

@@ -50,7 +50,16 @@ struct SeriesSummary {
     // 4 below, 8 above.
     int load_sides = 0;
     double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
+    // Units the scene names (empty: none): of lengths and forces, and of the reported load and
+    // displacement.
+    std::string length_unit, force_unit, load_unit, displacement_unit;
 };
+
+// "label (unit)", or the label alone without a unit.
+std::string with_unit(const std::string& label, const std::string& unit);
+// The unit of a result array by what it holds (moments force·length, forces, lengths, rotations
+// in rad); empty for shares and ratios or when the scene names no units.
+std::string array_unit(const SeriesSummary& summary, const std::string& array);
 
 // Throws RenderError naming the step file, or listing the arrays when `field` is not one of them.
 // magnify: the factor displacements are drawn with; 0 chooses one: 1 when the largest

@@ -154,7 +154,9 @@ void StructureView::add_with_mirror(vtkProp* prop, bool mirror) {
 
 void StructureView::add_colour_bar(double text_scale) {
     colour_bar_->SetLookupTable(colours_);
-    colour_bar_->SetTitle(readable(summary_.field.name).c_str());
+    // The unit on a line of its own: the column is narrow.
+    const std::string unit = array_unit(summary_, summary_.field.name);
+    colour_bar_->SetTitle((readable(summary_.field.name) + (unit.empty() ? "" : "\n(" + unit + ")")).c_str());
     colour_bar_->SetNumberOfLabels(5);
     colour_bar_->SetLabelFormat("%-#8.3g");
     colour_bar_->SetOrientationToVertical();

@@ -130,6 +130,15 @@ TEST_CASE("Supports and loads are drawn where the scene has them, and --hide lea
     CHECK(count_pixels(first, load, 0, structure_right, band_bottom, 1) == 0);
     CHECK(count_pixels(first, support, 0, structure_right, band_bottom, 1) > 40);
 
+    // Its scene names its units: the displacement in m, moments in kN·m, the load factor none.
+    const SeriesSummary units = summarise(open_series(portal.string()), "", 1.0);
+    CHECK(units.displacement_unit == "m");
+    CHECK(units.load_unit.empty());
+    CHECK(array_unit(units, "bending_moment") == "kN·m");
+    CHECK(array_unit(units, "reaction") == "kN");
+    CHECK(array_unit(units, "yielded_share").empty());
+    CHECK(with_unit(units.displacement_label, units.displacement_unit) == "sway at the beam (m)");
+
     RenderOptions hidden = small(portal / "hidden");
     hidden.hide = {"supports", "loads"};
     render_series(portal.string(), hidden);

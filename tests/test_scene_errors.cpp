@@ -145,6 +145,7 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"tensionless bed with kx", good + "[[foundation]]\nkind = \"tensionless\"\non = \"all\"\nky = 1.0\nkx = 1.0\n", "'foundation[1].kx': a tensionless bed pushes along its 'direction' only", 30},
         {"stage without a stop", good + "[[stage]]\nincrement = 0.1\n", "'stage[1]': missing a stop", 26},
         {"load-controlled stage to a displacement", good + "[[stage]]\nincrement = 0.1\ntarget_displacement = 0.0\n", "'stage[1].target_displacement': a load-controlled stage stops at a 'target_load_factor'", 28},
+        {"a unit that is not one", good + "[report]\nforce_unit = \"kilonewtons per square metre of the flange\"\n", "'report.force_unit': expected a short unit name", 27},
         {"a table nothing reads", good + "[render]\nfield = \"gap\"\n", "'render': unknown key", 26},
     };
     for (const Case& c : cases) {

@@ -150,6 +150,7 @@ struct ReportSpec {
     std::string displacement_label = "control displacement";
     std::string exact;  // a closed form this scene has ("cantilever_tip_load"), for `plastica study`
     std::optional<double> mirror_x; // a half model symmetric about x = mirror_x: pictures show both halves
+    std::string length_unit, force_unit; // names for pictures ("mm", "kN"); empty: none given
 };
 
 struct Model {

@@ -15,7 +15,7 @@ namespace {
 
 class ContactLayer final : public Layer {
 public:
-    explicit ContactLayer(const SeriesSummary& summary) : largest_(summary.max_contact_force) {}
+    explicit ContactLayer(const SeriesSummary& summary) : largest_(summary.max_contact_force), unit_(summary.force_unit) {}
 
     void reserve(double box[4], double size) override {
         // Room under the base for the arrows: the largest is 14 % of the structure's size.
@@ -55,11 +55,12 @@ public:
     std::string note() const override {
         char text[64];
         std::snprintf(text, sizeof text, "%.4g", largest_);
-        return "longest: " + std::string(text) + "\n(largest in the run)";
+        return "longest: " + std::string(text) + (unit_.empty() ? "" : " " + unit_) + "\n(largest in the run)";
     }
 
 private:
     double largest_;
+    std::string unit_;
     double scale_ = 0.0; // world length per unit force
     ViewGeometry view_;
     FlatMarks arrows_{3.0};

@@ -69,9 +69,11 @@ public:
 
     std::string note() const override {
         std::string text;
-        if (summary_.max_load_force > 0) text = "longest: " + short_number(summary_.max_load_force);
+        const auto unit = [](const std::string& u) { return u.empty() ? std::string() : " " + u; };
+        if (summary_.max_load_force > 0) text = "longest: " + short_number(summary_.max_load_force) + unit(summary_.force_unit);
         if (summary_.max_load_moment > 0)
-            text += (text.empty() ? "" : ", ") + std::string("moment ") + short_number(summary_.max_load_moment);
+            text += (text.empty() ? "" : ", ") + std::string("moment ") + short_number(summary_.max_load_moment) +
+                    unit(array_unit(summary_, "moment_i"));
         return text + "\n(largest in the run)";
     }
 
