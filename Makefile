@@ -19,7 +19,7 @@ build: deps $(BUILD)/CMakeCache.txt
 # The headline job: the elastic ring, then the inelastic ring with the elastic curve in its chart.
 ifeq ($(SCENE),models/ring_inelastic.toml)
 RUN_FIRST = $(BUILD)/cli/plastica run models/ring_elastic.toml -q &&
-RUN_ARGS  = --overlay out/ring_elastic
+RUN_ARGS  = --overlay out/ring_elastic --shapes 25,50,75,100
 endif
 
 run: build

@@ -14,6 +14,7 @@ void add_render_options(po::options_description& options) {
         ("size", po::value<std::string>()->default_value("1280x720"), "picture size WIDTHxHEIGHT in pixels")
         ("field", po::value<std::string>()->default_value(""), "point or cell array that colours the structure (default: yielded_share with distributed plasticity, else bending_moment)")
         ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
+        ("shapes", po::value<std::string>(), "displacements d1,d2,…: shapes.png, the deformed shapes there drawn over each other (an --overlay run beside)")
         ("overlay-csv", po::value<std::vector<std::string>>()->composing(), "FILE:label, points (displacement, load per line) drawn over chart.png, e.g. digitised from a paper (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
         ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
@@ -63,6 +64,18 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
         return items;
     };
     if (vm.count("hide")) options.hide = split(vm["hide"].as<std::string>());
+    if (vm.count("shapes")) {
+        try {
+            for (const std::string& d : split(vm["shapes"].as<std::string>())) {
+                std::size_t used = 0;
+                options.shapes.push_back(std::stod(d, &used));
+                if (used != d.size()) throw std::invalid_argument(d);
+            }
+        } catch (const std::exception&) {
+            std::cerr << "plastica: --shapes takes displacements separated by commas, e.g. 25,50,75,100\n";
+            return bad_input;
+        }
+    }
     if (vm.count("steps")) {
         try {
             for (const std::string& s : split(vm["steps"].as<std::string>())) {

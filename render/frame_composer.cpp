@@ -1,5 +1,6 @@
 #include "frame_composer.hpp"
 #include "layer_list.hpp"
+#include "text_and_mirror.hpp"
 
 #include <vtkImageData.h>
 #include <vtkRenderer.h>
@@ -19,13 +20,7 @@ namespace {
 constexpr double band = 0.11;
 constexpr double split = 0.57;
 
-void style(vtkTextActor* text, double size, bool bold) {
-    vtkTextProperty* p = text->GetTextProperty();
-    p->SetFontFamilyToArial();
-    p->SetFontSize(static_cast<int>(std::lround(size)));
-    p->SetBold(bold);
-    p->SetColor(colour::text.red(), colour::text.green(), colour::text.blue());
-}
+void style(vtkTextActor* text, double size, bool bold) { style_text(text->GetTextProperty(), size, bold); }
 
 std::vector<double> column(const std::vector<CurvePoint>& curve, std::size_t count, bool load) {
     std::vector<double> v;

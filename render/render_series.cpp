@@ -1,5 +1,6 @@
 #include "render_series.hpp"
 #include "reference_points.hpp"
+#include "shapes_figure.hpp"
 #include "animation.hpp"
 #include "contact_sheet.hpp"
 #include "frame_composer.hpp"
@@ -111,6 +112,14 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     std::vector<const SeriesSummary*> runs{&summary};
     for (const SeriesSummary& o : overlays) runs.push_back(&o);
     write_png(draw_curve_chart(runs, options.width, options.height, references), (out / "chart.png").string());
+    if (!options.shapes.empty()) {
+        // This run's shapes, and each overlay's beside them at one scale.
+        std::vector<ResultSeries> others;
+        for (const std::string& other : options.overlays) others.push_back(open_series(other));
+        std::vector<ShapesPanel> panels{{&summary, &series}};
+        for (std::size_t k = 0; k < others.size(); ++k) panels.push_back({&overlays[k], &others[k]});
+        write_png(draw_shapes(panels, options.shapes, options.width, options.height), (out / "shapes.png").string());
+    }
     if (auto image = sheet.compose()) write_png(image, (out / "contact_sheet.png").string());
     if (options.animation) {
         const AnimationResult gif = write_gif(frames.string(), (out / (summary.scene + ".gif")).string());

@@ -19,6 +19,7 @@ struct RenderOptions {
     std::vector<std::string> hide;        // layers left out: initial, base, hinges, contact, supports, loads
     std::vector<std::string> overlays;    // further series whose curves join chart.png
     std::vector<std::string> reference_points; // FILE:label CSVs of points that join chart.png
+    std::vector<double> shapes;           // control displacements for shapes.png (empty: none)
     double magnify = 1.0;                 // displacements drawn × this; 0: chosen (see summarise)
     bool animation = true;
     bool quiet = false;

@@ -1,5 +1,6 @@
 #include "structure_view.hpp"
 #include "ribbon.hpp"
+#include "text_and_mirror.hpp"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -32,14 +33,6 @@ namespace {
 
 // Share of the viewport width kept free on the right for the colour bar and the legend.
 constexpr double side_column = 0.25;
-
-void style_text(vtkTextProperty* p, double size, bool bold = false) {
-    p->SetFontFamilyToArial();
-    p->SetFontSize(static_cast<int>(std::lround(size)));
-    p->SetColor(colour::text.red(), colour::text.green(), colour::text.blue());
-    p->SetBold(bold);
-    p->SetShadow(false);
-}
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -141,15 +134,7 @@ void StructureView::add_with_mirror(vtkProp* prop, bool mirror) {
     renderer_->AddViewProp(prop);
     vtkActor* actor = vtkActor::SafeDownCast(prop);
     if (!mirror || !summary_.mirrored || !actor) return;
-    // The same data drawn reflected about x = mirror_x: x → 2·mirror_x − x.
-    vtkNew<vtkTransform> reflect;
-    reflect->Translate(summary_.mirror_x, 0, 0);
-    reflect->Scale(-1, 1, 1);
-    reflect->Translate(-summary_.mirror_x, 0, 0);
-    vtkNew<vtkActor> twin;
-    twin->ShallowCopy(actor);
-    twin->SetUserTransform(reflect);
-    renderer_->AddActor(twin);
+    renderer_->AddActor(mirrored(actor, summary_.mirror_x));
 }
 
 void StructureView::add_colour_bar(double text_scale) {

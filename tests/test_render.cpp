@@ -208,6 +208,30 @@ TEST_CASE("Reference points from a CSV join the chart as markers; a bad line is 
     CHECK_THROWS_WITH(render_series(series.string(), with), Catch::Contains("bad.csv:3: expected 'displacement, load'"));
 }
 
+TEST_CASE("Shapes at several displacements, two runs side by side at one scale", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path elastic = solved_series("ring_elastic", 10, "shapes_elastic");
+    const fs::path inelastic = solved_series("ring_inelastic", 10, "shapes_inelastic");
+    RenderOptions o = small(elastic / "pictures");
+    o.steps = {0};
+    o.overlays = {inelastic.string()};
+    o.shapes = {50.0, 100.0};
+    render_series(elastic.string(), o);
+    auto shapes = read_png((elastic / "pictures" / "shapes.png").string());
+    int d[3];
+    shapes->GetDimensions(d);
+    CHECK(d[0] == 640);
+    // The last shape in the darkest blue, the unloaded ring in grey, in each half.
+    const auto dark = [](Pixel p) { return p.r == 10 && p.g == 40 && p.b == 110; };
+    const auto grey = [](Pixel p) { return is(p, colour::initial_shape); };
+    for (double x0 : {0.0, 0.5}) {
+        CHECK(count_pixels(shapes, dark, x0, x0 + 0.35, band_bottom, 1) > 100);
+        CHECK(count_pixels(shapes, grey, x0, x0 + 0.35, band_bottom, 1) > 100);
+    }
+    o.shapes = {150.0};
+    CHECK_THROWS_WITH(render_series(elastic.string(), o), Catch::Contains("the run does not reach top displacement = 150"));
+}
+
 TEST_CASE("The chart's curve rises where the load rises", "[render]") {
     unsetenv("DISPLAY");
     const fs::path series = solved_series("ring_elastic", 10, "chart");

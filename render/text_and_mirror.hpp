@@ -1,0 +1,17 @@
+// Two small habits of every picture: text in the palette's text colour (Arial, no shadow), and
+// the mirror image of an actor for a half model drawn whole.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+class vtkTextProperty;
+
+namespace plastica::render {
+
+void style_text(vtkTextProperty* p, double size, bool bold = false);
+
+// A copy of the actor drawn reflected about the line x = mirror_x (x → 2·mirror_x − x).
+vtkSmartPointer<vtkActor> mirrored(vtkActor* actor, double mirror_x);
+
+} // namespace plastica::render
