@@ -183,6 +183,17 @@ std::vector<StabilityCase> robustness_cases() {
                          return std::abs(again - first) <= 5e-3 * first
                                     ? "" : "P(100) " + std::to_string(first) + " first, " + std::to_string(again) + " again";
                      }});
+    cases.push_back({"cantilever onto a rigid floor", "uniform load, lying down from the tip", embedded_scene("gallery/cantilever_onto_floor"),
+                     done, [](const Steps& steps, const RunSummary&) -> std::string {
+                         // The floor and the clamp carry the whole load; half the member lies down.
+                         const StepResult& r = steps.back();
+                         double clamp = 0.0;
+                         for (std::size_t k = 1; k < r.reaction.size(); k += 3) clamp += r.reaction[k];
+                         if (std::abs(r.base_reaction + clamp - r.load) > 1e-4 * r.load)
+                             return "floor " + std::to_string(r.base_reaction) + " + clamp " + std::to_string(clamp) +
+                                    " against the load " + std::to_string(r.load);
+                         return r.contact_length >= 4.0 ? "" : "contact length " + std::to_string(r.contact_length);
+                     }});
     cases.push_back({"Lee's frame, arc length", "through the limit and the snap-back", embedded_scene("gallery/lee_frame"),
                      done, [](const Steps& steps, const RunSummary&) -> std::string {
                          // The limit load 18.5 EI/L² (1.8659 for this 10 + 10 mesh), then the load
