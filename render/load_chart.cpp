@@ -106,6 +106,17 @@ void LoadChart::set_ranges(double x0, double x1, double y0, double y1) {
         vtkAxis* a = chart_->GetAxis(axis);
         a->SetBehavior(vtkAxis::FIXED);
         a->SetRange(lo, hi);
+        if (a->GetLogScale()) continue;
+        // One number format per axis: fixed decimals enough for the tick spacing, or scientific
+        // for very large or very small values (VTK's default mixes "8e+06" with "500000").
+        const double magnitude = std::max(std::abs(lo), std::abs(hi)), span = std::abs(hi - lo);
+        if (magnitude >= 1e5 || (magnitude > 0.0 && magnitude < 1e-3)) {
+            a->SetNotation(vtkAxis::SCIENTIFIC_NOTATION);
+            a->SetPrecision(2);
+        } else if (span > 0.0) {
+            a->SetNotation(vtkAxis::FIXED_NOTATION);
+            a->SetPrecision(std::max(0, -static_cast<int>(std::floor(std::log10(span / 20.0)))));
+        }
     }
 }
 

@@ -143,7 +143,7 @@ void StructureView::add_colour_bar(double text_scale) {
     const std::string unit = array_unit(summary_, summary_.field.name);
     colour_bar_->SetTitle((readable(summary_.field.name) + (unit.empty() ? "" : "\n(" + unit + ")")).c_str());
     colour_bar_->SetNumberOfLabels(5);
-    colour_bar_->SetLabelFormat("%-#8.3g");
+    colour_bar_->SetLabelFormat("%-8.3g"); // 255, not "255."
     colour_bar_->SetOrientationToVertical();
     colour_bar_->UnconstrainedFontSizeOn();
     colour_bar_->SetBarRatio(0.22);
