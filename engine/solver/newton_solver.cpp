@@ -33,7 +33,6 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
                              const IterationHook& hook) {
     NewtonResult result;
     double last_correction = 0.0;
-    double previous_correction = 0.0;
     double damping = 1.0;
     std::vector<double> history; // residual norms of the iterations so far
     bool release = false; // re-decide frozen active sets at the next evaluation
@@ -69,14 +68,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             // between two states that far apart without ever settling, and a tiny last
             // increment that lands on a target has no other scale.
             const double floor = 1e-9 * problem.state_norm();
-            // The error left in the state is the next correction, estimated from the last two as
-            // c_k²/c_{k−1} (exact for linear convergence, an overestimate for quadratic): where a
-            // nearly singular tangent turns round-off into corrections, the next one is never
-            // computed cleanly, but the contraction that led to the round-off floor still shows.
-            const double remaining = previous_correction > 0.0
-                                         ? last_correction * std::min(1.0, last_correction / previous_correction)
-                                         : last_correction;
-            const bool small_correction = remaining <= settings.displacement_tolerance * result.increment.norm() ||
+            const bool small_correction = last_correction <= settings.displacement_tolerance * result.increment.norm() ||
                                           last_correction <= floor;
             const bool settled = problem.settled();
             // Equilibrium with frozen active sets that the state contradicts: let them be
@@ -150,7 +142,6 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         }
         result.increment += du;
         result.load_change += step_dl;
-        previous_correction = last_correction;
         last_correction = du.norm();
     }
     result.failure = problem.settled() ? NewtonFailure::iteration_limit : NewtonFailure::unsettled;
