@@ -13,9 +13,14 @@ done
 echo "Installing missing Debian packages: ${missing[*]}"
 SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-$SUDO apt-get update -q
-if ! DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-remove --no-install-recommends "${missing[@]}"; then
-  cat >&2 <<'MSG'
+# Another apt-get (an unattended upgrade, a second make) may hold the package lock: wait for it.
+apt=($SUDO apt-get -o DPkg::Lock::Timeout=600)
+"${apt[@]}" update -q
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+if ! DEBIAN_FRONTEND=noninteractive "${apt[@]}" install -y -q --no-remove --no-install-recommends "${missing[@]}" 2>&1 | tee "$log"; then
+  if grep -qi "remov" "$log"; then
+    cat >&2 <<'MSG'
 
 install-deps.sh: apt-get would have to remove a package to install Plastica's dependencies, and
 this script never removes one. The usual cause on Debian 12: python3-paraview (ParaView's pvpython
@@ -25,5 +30,8 @@ installed together. Choose one:
   - remove python3-paraview yourself (apt-get remove python3-paraview), then run make again.
 The ParaView GUI (package paraview) does not conflict and opens Plastica's PVD files either way.
 MSG
+  else
+    echo "install-deps.sh: apt-get could not install: ${missing[*]} (its messages are above)" >&2
+  fi
   exit 1
 fi
