@@ -1,6 +1,7 @@
 // plastica: co-rotational beam-columns with plastic hinges and unilateral foundations.
 // This file only dispatches to the subcommands.
 #include "commands.hpp"
+#include "drawing_program.hpp"
 
 #include <cstring>
 #include <malloc.h>
@@ -36,9 +37,15 @@ int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 256 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
     mallopt(M_TOP_PAD, 64 << 20);
+    // Commands that draw are compiled into plastica-draw only; plastica hands them over.
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"render", render_command}, {"compare", compare_command}, {"study", study_command}, {"stability", stability_command}, {"section", section_command},
-        {"sweep", sweep_command}, {"merge", merge_command}};
+        {"run", run_command}, {"stability", stability_command},
+#ifdef PLASTICA_DRAWING
+        {"render", render_command}, {"compare", compare_command}, {"study", study_command},
+        {"section", section_command}, {"sweep", sweep_command}, {"merge", merge_command},
+#endif
+    };
+    const char* drawing_commands[] = {"render", "compare", "study", "section", "sweep", "merge"};
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
         std::cout << usage;
         return argc < 2 ? bad_input : ok;
@@ -48,6 +55,9 @@ int main(int argc, char** argv) {
         return ok;
     }
     const auto command = commands.find(argv[1]);
+    if (command == commands.end() && !can_draw())
+        for (const char* name : drawing_commands)
+            if (!std::strcmp(argv[1], name)) return hand_over_to_drawing(name, Args(argv + 2, argv + argc));
     if (command == commands.end()) {
         std::cerr << "plastica: unknown command '" << argv[1] << "'\n" << usage;
         return bad_input;

@@ -1,5 +1,6 @@
 // The options the render stage shares between `plastica render` and `plastica run`, and the
-// call that reports its outcome on stderr.
+// call that reports its outcome on stderr (render_options.cpp: the options, in both programs;
+// render_stage.cpp: the drawing, in plastica-draw only).
 #pragma once
 
 #include "commands.hpp"

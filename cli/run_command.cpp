@@ -1,6 +1,7 @@
 // plastica run: read a scene, solve it, write curve.csv, run.json and the VTU/PVD series,
 // then render the series unless --no-render (--curves-only: curve.csv and run.json alone).
 #include "commands.hpp"
+#include "drawing_program.hpp"
 #include "options.hpp"
 #include "output_folder.hpp"
 #include "progress.hpp"
@@ -102,6 +103,9 @@ int run_command(const Args& args) {
             return bad_input;
         }
     }
+    // The lean plastica has no drawing linked in: a run that draws is plastica-draw's, whole.
+    const bool draws = !vm.count("no-render") && !vm.count("curves-only");
+    if (draws && !can_draw()) return hand_over_to_drawing("run", args);
     PathFollowing analysis(model);
     if (const std::string m = analysis.initial_mechanism(); !m.empty()) {
         std::cerr << "plastica: " << scene_file << ": " << m << "\n";
@@ -154,13 +158,37 @@ int run_command(const Args& args) {
     RunControl control;
     control.interrupt = &stop_requested;
     const auto t1 = std::chrono::steady_clock::now();
-    std::vector<StepObserver> observers{std::ref(curve), track};
-    if (series) observers.emplace_back(std::ref(*series));
-    report.summary = analysis.run(observers, control);
+    // A step is written everywhere or nowhere: when the series cannot take it (a full disk),
+    // its curve row is taken back, and the run stops with every output at the step before.
+    auto write_step = [&](const StepResult& r) {
+        curve(r);
+        if (series) try {
+                (*series)(r);
+            } catch (...) {
+                curve.take_back_last_row();
+                throw;
+            }
+        track(r);
+    };
+    report.summary = analysis.run({write_step}, control);
     progress.finish();
-    if (series) series->finish();
+    if (series) try {
+            series->finish();
+        } catch (const std::exception& e) {
+            // The last step, skipped by --every, could not be added: the series ends earlier.
+            report.summary.status = RunStatus::output_failed;
+            report.summary.reason = std::string("the last step could not be added to the series: ") + e.what();
+        }
     report.stage_seconds = {{"read", read_seconds}, {"analysis_and_output", seconds_since(t1)}};
-    write_run_report((fs::path(folder) / "run.json").string(), report);
+    try {
+        write_run_report((fs::path(folder) / "run.json").string(), report);
+    } catch (const std::exception& e) {
+        std::cerr << "plastica: " << e.what() << " (run.json keeps the state it had when the run started)\n";
+        if (report.summary.status == RunStatus::completed) {
+            report.summary.status = RunStatus::output_failed;
+            report.summary.reason = e.what();
+        }
+    }
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
 
@@ -170,10 +198,12 @@ int run_command(const Args& args) {
                   << report.peak_load << "; output in " << folder << "\n";
     if (report.summary.status == RunStatus::interrupted) return interrupted;
     // The converged steps are drawn even when the analysis stopped early.
-    if (!vm.count("no-render") && !curves_only && report.summary.steps > 0) {
+#ifdef PLASTICA_DRAWING
+    if (draws && report.summary.steps > 0) {
         render_options.quiet = quiet;
         if (const int code = render_and_report(folder, render_options); code != ok) return code;
     }
+#endif
     if (report.summary.status != RunStatus::completed) {
         std::cerr << "plastica: " << scene_file << ": analysis stopped early: " << report.summary.reason
                   << " (the " << report.summary.steps << " converged steps are kept)\n";

@@ -60,11 +60,12 @@ std::vector<double> displacements(const po::variables_map& vm) {
     return at;
 }
 
-// This program's own path, so that every run is the same plastica.
+// The lean plastica beside this program (plastica-draw), so that every run is the same
+// plastica and starts without the rendering libraries.
 std::string self() {
     std::error_code ec;
     const fs::path p = fs::read_symlink("/proc/self/exe", ec);
-    return ec ? std::string("plastica") : p.string();
+    return ec ? std::string("plastica") : (p.parent_path() / "plastica").string();
 }
 
 pid_t launch(const std::string& program, const std::vector<std::string>& args, const fs::path& log) {

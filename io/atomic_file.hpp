@@ -6,7 +6,11 @@
 
 namespace plastica {
 
+// Throws std::runtime_error naming the path and the reason (a full disk: "No space left on
+// device") and leaves neither the temporary nor a partial file.
 void write_file_atomically(const std::string& path, const std::string& contents);
+// Writes all of it to an open descriptor, or throws naming the path and the reason.
+void write_all(int fd, const char* data, std::size_t size, const std::string& path);
 std::string temporary_name(const std::string& path);
 void rename_into_place(const std::string& temporary, const std::string& path);
 

@@ -2,14 +2,13 @@
 // control_displacement, iterations, contact_count, hinge_count, plastic_hinge_count,
 // base_reaction, contact_length, negative_pivots, accepted_by, residual, then one column per
 // DOF a [[support]] fixes (support1_fx, support1_fy, support2_mz, …: the force the support
-// exerts on the structure). The file is flushed after every row so a run stopped half-way
-// leaves a complete prefix.
+// exerts on the structure). Each row goes out in one write, so a run stopped half-way leaves a
+// complete prefix; a row that cannot be written whole (a full disk) is taken back.
 #pragma once
 
 #include "analysis/step_result.hpp"
 #include "model/model.hpp"
 
-#include <fstream>
 #include <string>
 
 namespace plastica {
@@ -17,11 +16,22 @@ namespace plastica {
 class CurveWriter {
 public:
     CurveWriter(const std::string& path, const Model& model);
+    ~CurveWriter();
+    CurveWriter(const CurveWriter&) = delete;
+    CurveWriter& operator=(const CurveWriter&) = delete;
+
     void operator()(const StepResult& r);
+    // Removes the last row (its step could not be written elsewhere), so every output of a
+    // run ends at the same step.
+    void take_back_last_row();
 
 private:
-    std::ofstream out_;
+    void truncate_to(long long size);
+
+    std::string path_;
     const Model* model_;
+    int fd_ = -1;
+    long long size_ = 0, before_last_row_ = 0;
 };
 
 } // namespace plastica

@@ -1,6 +1,5 @@
 // Observer that writes every k-th converged step as out/<scene>/vtu/step_NNNNNN.vtu (appended
-// raw data: uncompressed by the lean writer of raw_vtu_format.hpp, or LZ4 or zlib through VTK's
-// XML writer), and keeps <scene>.pvd valid after each step in
+// raw data, uncompressed or in LZ4 or zlib blocks: vtk_xml_format.hpp), and keeps <scene>.pvd valid after each step in
 // O(1): the new entries are written over the closing tags, which follow them again (the file
 // is never rewritten whole, whatever the step count). The PVD time is monotone (the
 // step index, or the cumulative arc length); the load factor is field data. The base line and
@@ -10,6 +9,7 @@
 
 #include "analysis/step_result.hpp"
 #include "model/model.hpp"
+#include "vtk_xml_format.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -20,9 +20,6 @@
 namespace plastica {
 
 enum class SeriesTime { step, arc_length };
-
-// ParaView 5.11 reads all three; the default is chosen by measurement (README, Performance).
-enum class Compression { none, lz4, zlib };
 
 struct SeriesOptions {
     int every = 1;                  // write every k-th step (the first and last always)
@@ -52,8 +49,6 @@ private:
     void write_base();
     void append_to_pvd(double time, const std::string& file);
 
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
     const Model* model_;
     std::string directory_;
     std::string pvd_path_;

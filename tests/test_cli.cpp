@@ -419,3 +419,55 @@ TEST_CASE("Ctrl-C and SIGTERM stop a run cleanly: exit 130, valid series, run.js
         CHECK(plastica("render " + out.string() + " --every 1000 --size 320x180 --no-animation -q").code == 0);
     }
 }
+
+// A disk that fills up mid-run, as RLIMIT_FSIZE lets a test have one (the writes fail with
+// EFBIG where a full disk gives ENOSPC; both are the same failed write to plastica).
+TEST_CASE("A disk that fills mid-run stops it with exit 3: every output ends at the same step, no temporary files", "[cli][output]") {
+    // 8 kB: the first VTU cannot be written; 20 kB: curve.csv fills first (inelastic ring); the
+    // PVD fills first (elastic ring with arc-length times, whose entries are longer).
+    struct Case {
+        int kilobytes;
+        std::string scene, extra, full_file;
+    };
+    for (const Case& c : {Case{8, "ring_inelastic", "", "step_000000.vtu"}, Case{20, "ring_inelastic", "", "curve.csv"},
+                          Case{20, "ring_elastic", "--time arc_length", "ring_elastic.pvd"}}) {
+        CAPTURE(c.kilobytes, c.scene);
+        const fs::path out = scratch("full_disk_" + c.scene + std::to_string(c.kilobytes));
+        // sh's ulimit -f counts 512-byte blocks; XFSZ ignored so that the write fails instead.
+        const std::string cmd = "cd " + fs::temp_directory_path().string() + " && sh -c \"trap '' XFSZ; ulimit -f " +
+                                std::to_string(2 * c.kilobytes) + "; exec env -u DISPLAY " + PLASTICA_BINARY + " run " +
+                                model(c.scene + ".toml") + " -o " + out.string() + " --force --no-render -q " + c.extra +
+                                "\" > " + (out.string() + ".log") + " 2>&1";
+        fs::remove_all(out);
+        const int status = std::system(cmd.c_str());
+        std::ifstream log(out.string() + ".log");
+        std::stringstream message;
+        message << log.rdbuf();
+        CAPTURE(message.str());
+        CHECK(WEXITSTATUS(status) == 3);
+        CHECK(message.str().find(c.full_file + ": File too large") != std::string::npos);
+        std::ifstream json(out / "run.json");
+        std::stringstream report;
+        report << json.rdbuf();
+        CHECK(report.str().find("\"output_failed\"") != std::string::npos);
+        // The last step in curve.csv, in the PVD and on disk is the same one.
+        std::ifstream csv(out / "curve.csv");
+        std::string line, last_row;
+        while (std::getline(csv, line)) last_row = line;
+        const int rows_last_step = last_row.rfind("step", 0) == 0 ? -1 : std::stoi(last_row);
+        int vtu_files = 0, pvd_entries = 0;
+        if (fs::exists(out / "vtu"))
+            for (const auto& f : fs::directory_iterator(out / "vtu")) vtu_files += f.path().extension() == ".vtu";
+        std::ifstream pvd(out / (c.scene + ".pvd"));
+        std::string pvd_last;
+        while (std::getline(pvd, line)) {
+            pvd_entries += line.find("part=\"0\"") != std::string::npos;
+            pvd_last = line;
+        }
+        CHECK(vtu_files == rows_last_step + 1);
+        CHECK(pvd_entries == rows_last_step + 1);
+        if (fs::exists(out / (c.scene + ".pvd"))) CHECK(pvd_last == "</VTKFile>"); // a complete collection
+        CHECK(report.str().find("\"steps\": " + std::to_string(std::max(rows_last_step, 0))) != std::string::npos);
+        for (const auto& f : fs::recursive_directory_iterator(out)) CHECK(f.path().string().find(".tmp") == std::string::npos);
+    }
+}

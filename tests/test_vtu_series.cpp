@@ -5,6 +5,7 @@
 #include "scene_reader.hpp"
 #include "run_report.hpp"
 #include "vtu_series_writer.hpp"
+#include "xml_dataset.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -13,13 +14,16 @@
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkCell.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -224,5 +228,84 @@ TEST_CASE("Uncompressed, LZ4 and zlib series read back equal to the engine", "[o
             for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) CHECK(u->GetComponent(i, 1) == r.displacement[3 * i + 1]);
             for (vtkIdType e = 0; e < grid->GetNumberOfCells(); ++e) CHECK(n->GetComponent(e, 0) == r.elements[e].forces.axial);
         }
+    }
+}
+
+TEST_CASE("The XML serialiser's files read back through VTK to the last bit, in one block or many", "[output]") {
+    // 6000 points: the coordinates span six 32 kB compression blocks and a partial seventh.
+    const std::size_t n = 6000;
+    XmlDataset data;
+    XmlArray real = real_array("value", n, 2), whole = integer_array("flag", n - 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        data.points.insert(data.points.end(), {std::sin(0.37 * i) * 1e3, 1.0 / (i + 1.0), -std::ldexp(1.0, -40) * i});
+        std::get<std::vector<double>>(real.values)[2 * i] = std::exp(0.01 * i);
+        std::get<std::vector<double>>(real.values)[2 * i + 1] = -1.0 / 3.0 * i;
+        if (i + 1 < n) {
+            data.lines.push_back({static_cast<std::int64_t>(i), static_cast<std::int64_t>(i + 1)});
+            std::get<std::vector<std::int32_t>>(whole.values)[i] = static_cast<std::int32_t>(i * 7919 % 1000003) - 500000;
+        }
+    }
+    data.point_data.push_back(real);
+    data.active_vectors = "";
+    data.cell_data.push_back(whole);
+    data.field_data.push_back(field_value("load", 0.1 + 0.2));
+    data.field_data.push_back(field_text("title", "ring <R = 100> & \"base\""));
+    for (const Compression c : {Compression::none, Compression::lz4, Compression::zlib}) {
+        CAPTURE(static_cast<int>(c));
+        const fs::path file = fs::temp_directory_path() / ("plastica_xml_" + std::to_string(static_cast<int>(c)) + ".vtu");
+        std::ofstream(file, std::ios::binary) << unstructured_grid_xml(data, c);
+        vtkNew<vtkXMLUnstructuredGridReader> reader;
+        reader->SetFileName(file.string().c_str());
+        reader->Update();
+        vtkUnstructuredGrid* grid = reader->GetOutput();
+        REQUIRE(grid->GetNumberOfPoints() == static_cast<vtkIdType>(n));
+        REQUIRE(grid->GetNumberOfCells() == static_cast<vtkIdType>(n - 1));
+        int differ = 0;
+        for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+            double p[3];
+            grid->GetPoint(i, p);
+            for (int k = 0; k < 3; ++k) differ += p[k] != data.points[3 * i + k];
+            vtkDataArray* v = grid->GetPointData()->GetArray("value");
+            for (int k = 0; k < 2; ++k) differ += v->GetComponent(i, k) != std::get<std::vector<double>>(real.values)[2 * i + k];
+        }
+        vtkDataArray* flag = grid->GetCellData()->GetArray("flag");
+        REQUIRE(flag);
+        for (vtkIdType e = 0; e < grid->GetNumberOfCells(); ++e) {
+            differ += flag->GetComponent(e, 0) != std::get<std::vector<std::int32_t>>(whole.values)[e];
+            differ += grid->GetCell(e)->GetPointId(1) != e + 1;
+        }
+        CHECK(differ == 0);
+        CHECK(grid->GetFieldData()->GetArray("load")->GetComponent(0, 0) == 0.1 + 0.2);
+        auto* title = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("title"));
+        REQUIRE(title);
+        CHECK(title->GetValue(0) == "ring <R = 100> & \"base\"");
+    }
+}
+
+TEST_CASE("Poly data holds vertices, then lines, with their cell values in that order", "[output]") {
+    XmlDataset data;
+    XmlArray kind = integer_array("kind", 0);
+    for (int i = 0; i < 3; ++i) {
+        data.points.insert(data.points.end(), {double(i), 0.0, 0.0});
+        data.vertices.push_back(i);
+        std::get<std::vector<std::int32_t>>(kind.values).push_back(0);
+    }
+    data.points.insert(data.points.end(), {-5.0, -1.0, 0.0, 5.0, -1.0, 0.0});
+    data.lines.push_back({3, 4});
+    std::get<std::vector<std::int32_t>>(kind.values).push_back(1);
+    data.cell_data.push_back(kind);
+    for (const Compression c : {Compression::none, Compression::zlib}) {
+        const fs::path file = fs::temp_directory_path() / ("plastica_xml_" + std::to_string(static_cast<int>(c)) + ".vtp");
+        std::ofstream(file, std::ios::binary) << poly_data_xml(data, c);
+        vtkNew<vtkXMLPolyDataReader> reader;
+        reader->SetFileName(file.string().c_str());
+        reader->Update();
+        vtkPolyData* poly = reader->GetOutput();
+        REQUIRE(poly->GetNumberOfVerts() == 3);
+        REQUIRE(poly->GetNumberOfLines() == 1);
+        vtkDataArray* k = poly->GetCellData()->GetArray("kind");
+        REQUIRE(k);
+        for (vtkIdType c2 = 0; c2 < 4; ++c2) CHECK(k->GetComponent(c2, 0) == (c2 < 3 ? 0 : 1));
+        CHECK(poly->GetPoint(4)[0] == 5.0);
     }
 }

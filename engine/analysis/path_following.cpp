@@ -110,8 +110,22 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
     const auto start = std::chrono::steady_clock::now();
     const AnalysisSpec& a = analysis_;
     RunSummary summary;
+    // An observer that cannot take a step (its disk is full) ends the run: the step is not
+    // counted, and the run's outputs end with the step before it.
     auto publish = [&](const StepResult& r) {
-        for (const StepObserver& o : observers) o(r);
+        try {
+            for (const StepObserver& o : observers) o(r);
+            return true;
+        } catch (const std::exception& e) {
+            summary.status = RunStatus::output_failed;
+            summary.reason = "the results of step " + std::to_string(r.step) + " could not be written: " + e.what();
+            return false;
+        }
+    };
+    auto finish = [&](int steps) {
+        summary.steps = steps;
+        summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return summary;
     };
 
     // Step 0: the unloaded state (springs evaluated so the contact set is known).
@@ -121,7 +135,7 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
         const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
         initial_flexibility_ = f.dot(solver_.solve(f));
     }
-    publish(make_result(0, 0, Acceptance::none));
+    if (!publish(make_result(0, 0, Acceptance::none))) return finish(0);
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
@@ -189,7 +203,7 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
         ++step_;
         arc_length_ += previous_increment_.norm();
         const std::string crossing = check_penetration();
-        publish(make_result(step_, outcome.iterations, outcome.rule));
+        if (!publish(make_result(step_, outcome.iterations, outcome.rule))) return finish(step_ - 1);
         if (!crossing.empty()) {
             summary.status = RunStatus::penetration;
             summary.reason = crossing;
@@ -208,9 +222,7 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
             break;
         }
     }
-    summary.steps = step_;
-    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return summary;
+    return finish(step_);
 }
 
 bool PathFollowing::target_reached() const {

@@ -18,6 +18,8 @@
 
 namespace plastica {
 
+// Takes each converged step (and the unloaded state as step 0). One that throws ends the run
+// with RunStatus::output_failed; it must leave its output as it was before that step.
 using StepObserver = std::function<void(const StepResult&)>;
 
 struct RunControl {

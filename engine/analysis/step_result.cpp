@@ -11,6 +11,7 @@ const char* to_string(RunStatus status) {
     case RunStatus::interrupted: return "interrupted";
     case RunStatus::step_limit: return "step_limit";
     case RunStatus::penetration: return "penetration";
+    case RunStatus::output_failed: return "output_failed";
     }
     return "unknown";
 }

@@ -50,7 +50,8 @@ struct StepResult {
     int plastic_hinge_count = 0;    // element ends at capacity
 };
 
-enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit, penetration };
+// output_failed: an observer could not take a step (a full disk); the steps before it stand.
+enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit, penetration, output_failed };
 
 struct RunSummary {
     RunStatus status = RunStatus::completed;

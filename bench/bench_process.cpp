@@ -1,0 +1,86 @@
+// Whole processes, as a user starts them: plastica's start-up, a run with a VTU per step, a
+// curves-only run, and a sweep's throughput. Wall time of the child from spawn to exit.
+#include <benchmark/benchmark.h>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace plastica::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs plastica with these arguments, output to /dev/null; its exit code.
+int plastica(std::vector<std::string> args) {
+    args.insert(args.begin(), PLASTICA_BINARY);
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    pid_t pid = -1;
+    const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) throw std::runtime_error("cannot start " + args[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string scene(const char* name) { return std::string(PLASTICA_SOURCE_DIR) + "/models/" + name + ".toml"; }
+
+void expect_success(benchmark::State& state, int code) {
+    if (code != 0) state.SkipWithError(("plastica exited with " + std::to_string(code)).c_str());
+}
+
+} // namespace
+
+void process_help(benchmark::State& state) {
+    for (auto _ : state) expect_success(state, plastica({"--help"}));
+}
+BENCHMARK(process_help)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The ring as shipped (200 steps), every step written as a VTU, nothing drawn.
+void process_ring_run(benchmark::State& state, const char* name, bool curves_only) {
+    const std::string out = (fs::temp_directory_path() / "plastica_bench_process").string();
+    std::vector<std::string> args{"run", scene(name), "-o", out, "-q", curves_only ? "--curves-only" : "--no-render"};
+    for (auto _ : state) {
+        state.PauseTiming();
+        fs::remove_all(out); // each run into an empty folder, as a first run is
+        state.ResumeTiming();
+        expect_success(state, plastica(args));
+    }
+}
+BENCHMARK_CAPTURE(process_ring_run, elastic_vtu, "ring_elastic", false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(process_ring_run, inelastic_vtu, "ring_inelastic", false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(process_ring_run, elastic_curves_only, "ring_elastic", true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(process_ring_run, inelastic_curves_only, "ring_inelastic", true)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A 3 × 3 sweep of the inelastic ring (fy × ky) on every core, from an empty folder: runs per second.
+void process_sweep(benchmark::State& state) {
+    const std::string dir = (fs::temp_directory_path() / "plastica_bench_sweep").string();
+    const std::vector<std::string> args{"sweep", scene("ring_inelastic"), "--vary", "material[1].fy=30000,36518,43000",
+                                        "--vary", "foundation[1].ky=600,1200,2400", "--no-charts", "-o", dir};
+    for (auto _ : state) {
+        state.PauseTiming();
+        fs::remove_all(dir);
+        state.ResumeTiming();
+        expect_success(state, plastica(args));
+    }
+    state.counters["runs_per_second"] = benchmark::Counter(9.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(process_sweep)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace plastica::bench

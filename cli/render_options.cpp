@@ -1,0 +1,91 @@
+#include "render_stage.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace plastica::cli {
+
+void add_render_options(po::options_description& options) {
+    options.add_options()
+        ("size", po::value<std::string>()->default_value("1280x720"), "picture size WIDTHxHEIGHT in pixels")
+        ("field", po::value<std::string>()->default_value(""), "point or cell array that colours the structure (default: yielded_share with distributed plasticity, else bending_moment)")
+        ("overlay", po::value<std::vector<std::string>>()->composing(), "another result folder whose curve joins chart.png (repeatable)")
+        ("shapes", po::value<std::string>(), "displacements d1,d2,…: shapes.png, the deformed shapes there drawn over each other (an --overlay run beside)")
+        ("overlay-csv", po::value<std::vector<std::string>>()->composing(), "FILE:label, points (displacement, load per line) drawn over chart.png, e.g. digitised from a paper (repeatable)")
+        ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
+        ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
+        ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
+        ("no-animation", "PNG frames only, no GIF");
+}
+
+std::optional<int> read_render_options(const po::variables_map& vm, render::RenderOptions& options) {
+    const std::string size = vm["size"].as<std::string>();
+    const auto x = size.find('x');
+    try {
+        std::size_t used_w = 0, used_h = 0;
+        if (x == std::string::npos) throw std::invalid_argument("no x");
+        options.width = std::stoi(size.substr(0, x), &used_w);
+        options.height = std::stoi(size.substr(x + 1), &used_h);
+        if (used_w != x || used_h != size.size() - x - 1) throw std::invalid_argument("trailing text");
+    } catch (const std::exception&) {
+        std::cerr << "plastica: --size takes WIDTHxHEIGHT in pixels, e.g. 1280x720 (got '" << size << "')\n";
+        return bad_input;
+    }
+    options.field = vm["field"].as<std::string>();
+    const std::string magnify = vm["magnify"].as<std::string>();
+    if (magnify == "auto") {
+        options.magnify = 0.0;
+    } else {
+        std::size_t used = 0;
+        double k = 0.0;
+        try {
+            k = std::stod(magnify, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != magnify.size() || !(k > 0.0) || !std::isfinite(k)) {
+            std::cerr << "plastica: --magnify takes auto or a positive factor, e.g. 20 (got '" << magnify << "')\n";
+            return bad_input;
+        }
+        options.magnify = k;
+    }
+    if (vm.count("overlay")) options.overlays = vm["overlay"].as<std::vector<std::string>>();
+    if (vm.count("overlay-csv")) options.reference_points = vm["overlay-csv"].as<std::vector<std::string>>();
+    options.animation = vm.count("no-animation") == 0;
+    auto split = [](const std::string& text) {
+        std::vector<std::string> items;
+        std::stringstream in(text);
+        for (std::string item; std::getline(in, item, ',');)
+            if (!item.empty()) items.push_back(item);
+        return items;
+    };
+    if (vm.count("hide")) options.hide = split(vm["hide"].as<std::string>());
+    if (vm.count("shapes")) {
+        try {
+            for (const std::string& d : split(vm["shapes"].as<std::string>())) {
+                std::size_t used = 0;
+                options.shapes.push_back(std::stod(d, &used));
+                if (used != d.size()) throw std::invalid_argument(d);
+            }
+        } catch (const std::exception&) {
+            std::cerr << "plastica: --shapes takes displacements separated by commas, e.g. 25,50,75,100\n";
+            return bad_input;
+        }
+    }
+    if (vm.count("steps")) {
+        try {
+            for (const std::string& s : split(vm["steps"].as<std::string>())) {
+                std::size_t used = 0;
+                options.steps.push_back(std::stoi(s, &used));
+                if (used != s.size()) throw std::invalid_argument(s);
+            }
+        } catch (const std::exception&) {
+            std::cerr << "plastica: --steps takes step numbers separated by commas, e.g. 0,104,200\n";
+            return bad_input;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace plastica::cli

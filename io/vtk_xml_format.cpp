@@ -1,0 +1,215 @@
+#include "vtk_xml_format.hpp"
+
+#include <lz4.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace plastica {
+
+namespace {
+
+constexpr std::size_t block_size = 32768; // vtkXMLWriter's default
+
+// The appended block: each array is its header (a byte count, or the block table of a
+// compressed array) followed by its bytes; the XML refers to it by its offset in the block.
+class Appended {
+public:
+    explicit Appended(Compression compression) : compression_(compression) {}
+
+    std::size_t add(const void* data, std::size_t bytes) {
+        const std::size_t offset = block_.size();
+        if (compression_ == Compression::none) {
+            put(bytes);
+            block_.append(static_cast<const char*>(data), bytes);
+        } else {
+            add_compressed(static_cast<const char*>(data), bytes);
+        }
+        return offset;
+    }
+    const std::string& bytes() const { return block_; }
+
+private:
+    void put(std::uint64_t value) { block_.append(reinterpret_cast<const char*>(&value), sizeof value); }
+
+    // [blocks, block size, size of a partial last block (0 if none), compressed size of each
+    // block], then the compressed blocks.
+    void add_compressed(const char* data, std::size_t bytes) {
+        const std::size_t full = bytes / block_size, last = bytes % block_size;
+        const std::size_t blocks = full + (last > 0 ? 1 : 0);
+        put(blocks);
+        put(block_size);
+        put(last);
+        const std::size_t table = block_.size();
+        block_.append(blocks * sizeof(std::uint64_t), '\0');
+        for (std::size_t b = 0; b < blocks; ++b) {
+            const std::size_t size = std::min(block_size, bytes - b * block_size);
+            const std::uint64_t packed = compress(data + b * block_size, size);
+            std::copy_n(reinterpret_cast<const char*>(&packed), sizeof packed, &block_[table + b * sizeof packed]);
+        }
+    }
+
+    std::size_t compress(const char* data, std::size_t size) {
+        const std::size_t at = block_.size();
+        if (compression_ == Compression::lz4) {
+            block_.resize(at + static_cast<std::size_t>(LZ4_compressBound(static_cast<int>(size))));
+            const int packed = LZ4_compress_default(data, &block_[at], static_cast<int>(size), static_cast<int>(block_.size() - at));
+            if (packed <= 0) throw std::runtime_error("LZ4 could not compress an array");
+            block_.resize(at + static_cast<std::size_t>(packed));
+            return static_cast<std::size_t>(packed);
+        }
+        uLongf packed = compressBound(static_cast<uLong>(size));
+        block_.resize(at + packed);
+        if (compress2(reinterpret_cast<Bytef*>(&block_[at]), &packed, reinterpret_cast<const Bytef*>(data), static_cast<uLong>(size), 5) != Z_OK)
+            throw std::runtime_error("zlib could not compress an array");
+        block_.resize(at + packed);
+        return packed;
+    }
+
+    Compression compression_;
+    std::string block_;
+};
+
+// XML attribute text: names come from the result schema and scene names, but say it safely.
+std::string escaped(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+struct Writer {
+    std::string xml;
+    Appended appended;
+
+    explicit Writer(Compression c) : appended(c) { xml.reserve(8192); }
+
+    void data_array(const XmlArray& array, const char* indent, bool tuples_attribute) {
+        const std::string name = escaped(array.name);
+        std::string type;
+        std::size_t offset = 0;
+        if (const auto* text = std::get_if<std::vector<std::string>>(&array.values)) {
+            // Strings: each value's characters and a terminating NUL, in one block.
+            std::string bytes;
+            for (const std::string& s : *text) bytes.append(s).push_back('\0');
+            offset = appended.add(bytes.data(), bytes.size());
+            xml += std::string(indent) + "<Array type=\"String\" Name=\"" + name + "\" NumberOfTuples=\"" +
+                   std::to_string(text->size()) + "\" format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+            return;
+        }
+        if (const auto* real = std::get_if<std::vector<double>>(&array.values)) {
+            type = "Float64";
+            offset = appended.add(real->data(), real->size() * sizeof(double));
+        } else {
+            const auto& integer = std::get<std::vector<std::int32_t>>(array.values);
+            type = "Int32";
+            offset = appended.add(integer.data(), integer.size() * sizeof(std::int32_t));
+        }
+        xml += std::string(indent) + "<DataArray type=\"" + type + "\" Name=\"" + name + "\"";
+        if (array.components != 1) xml += " NumberOfComponents=\"" + std::to_string(array.components) + "\"";
+        if (tuples_attribute) xml += " NumberOfTuples=\"" + std::to_string(array.tuples()) + "\"";
+        xml += " format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+    }
+
+    void attribute_data(const std::vector<XmlArray>& arrays, const char* tag, const std::string& vectors) {
+        xml += std::string("      <") + tag;
+        if (!vectors.empty()) xml += " Vectors=\"" + escaped(vectors) + "\"";
+        xml += ">\n";
+        for (const XmlArray& a : arrays) data_array(a, "        ", false);
+        xml += std::string("      </") + tag + ">\n";
+    }
+
+    void header(const char* type, Compression compression, const XmlDataset& data) {
+        xml += std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"") + type +
+               "\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
+        if (compression == Compression::lz4) xml += " compressor=\"vtkLZ4DataCompressor\"";
+        if (compression == Compression::zlib) xml += " compressor=\"vtkZLibDataCompressor\"";
+        xml += std::string(">\n  <") + type + ">\n";
+        if (!data.field_data.empty()) {
+            xml += "    <FieldData>\n";
+            for (const XmlArray& a : data.field_data) data_array(a, "      ", true);
+            xml += "    </FieldData>\n";
+        }
+    }
+
+    void points(const XmlDataset& data) {
+        xml += "      <Points>\n";
+        data_array({"Points", 3, data.points}, "        ", false);
+        xml += "      </Points>\n";
+    }
+
+    // A cell block: connectivity and offsets as Int64 (and the cell types as UInt8 in a grid).
+    void cells(const char* tag, const std::vector<std::int64_t>& connectivity, int points_per_cell, bool with_types, std::uint8_t type) {
+        const std::size_t count = connectivity.size() / static_cast<std::size_t>(points_per_cell);
+        std::vector<std::int64_t> offsets(count);
+        for (std::size_t c = 0; c < count; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * static_cast<std::size_t>(points_per_cell));
+        const std::size_t at_connectivity = appended.add(connectivity.data(), connectivity.size() * sizeof(std::int64_t));
+        const std::size_t at_offsets = appended.add(offsets.data(), offsets.size() * sizeof(std::int64_t));
+        xml += std::string("      <") + tag + ">\n"
+               "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"" + std::to_string(at_connectivity) + "\"/>\n"
+               "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"" + std::to_string(at_offsets) + "\"/>\n";
+        if (with_types) {
+            const std::vector<std::uint8_t> types(count, type);
+            const std::size_t at_types = appended.add(types.data(), types.size());
+            xml += "        <DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"" + std::to_string(at_types) + "\"/>\n";
+        }
+        xml += std::string("      </") + tag + ">\n";
+    }
+
+    std::string finish(const char* type) {
+        xml += std::string("    </Piece>\n  </") + type + ">\n  <AppendedData encoding=\"raw\">\n   _";
+        xml += appended.bytes();
+        xml += "\n  </AppendedData>\n</VTKFile>\n";
+        return std::move(xml);
+    }
+};
+
+std::vector<std::int64_t> flat(const std::vector<std::array<std::int64_t, 2>>& lines) {
+    std::vector<std::int64_t> ids;
+    ids.reserve(2 * lines.size());
+    for (const auto& l : lines) ids.insert(ids.end(), l.begin(), l.end());
+    return ids;
+}
+
+constexpr std::uint8_t vtk_line = 3; // VTK_LINE
+
+} // namespace
+
+std::string unstructured_grid_xml(const XmlDataset& data, Compression compression) {
+    if (!data.vertices.empty()) throw std::logic_error("unstructured_grid_xml: a grid of this series holds line cells only");
+    Writer w(compression);
+    w.header("UnstructuredGrid", compression, data);
+    w.xml += "    <Piece NumberOfPoints=\"" + std::to_string(data.point_count()) + "\" NumberOfCells=\"" +
+             std::to_string(data.lines.size()) + "\">\n";
+    w.attribute_data(data.point_data, "PointData", data.active_vectors);
+    w.attribute_data(data.cell_data, "CellData", "");
+    w.points(data);
+    w.cells("Cells", flat(data.lines), 2, true, vtk_line);
+    return w.finish("UnstructuredGrid");
+}
+
+std::string poly_data_xml(const XmlDataset& data, Compression compression) {
+    Writer w(compression);
+    w.header("PolyData", compression, data);
+    w.xml += "    <Piece NumberOfPoints=\"" + std::to_string(data.point_count()) + "\" NumberOfVerts=\"" +
+             std::to_string(data.vertices.size()) + "\" NumberOfLines=\"" + std::to_string(data.lines.size()) +
+             "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+    w.attribute_data(data.point_data, "PointData", data.active_vectors);
+    w.attribute_data(data.cell_data, "CellData", ""); // vertices' values first, then the lines'
+    w.points(data);
+    w.cells("Verts", data.vertices, 1, false, 0);
+    w.cells("Lines", flat(data.lines), 2, false, 0);
+    w.cells("Strips", {}, 1, false, 0);
+    w.cells("Polys", {}, 1, false, 0);
+    return w.finish("PolyData");
+}
+
+} // namespace plastica
