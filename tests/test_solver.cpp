@@ -72,3 +72,68 @@ target_load_factor = 4.0
     CHECK(r.steps.back().load_factor <= collapse);
     CHECK(r.steps.back().load_factor >= 0.97 * collapse);
 }
+
+// Stop reasons that are true at any scale: a mechanism only where the supports leave a rigid
+// motion free, never because stiffnesses differ by many orders; round-off named as the cause
+// where it sets the floor.
+namespace {
+
+std::string mechanism_of(const std::string& toml) {
+    const Model m = read_scene_text(toml, "scale.toml");
+    PathFollowing analysis(m);
+    return analysis.initial_mechanism();
+}
+
+const char* small_load_steps = "scheme = \"load_control\"\nincrement = 0.5\ntarget_load_factor = 1.0\nresidual_tolerance = 1e-8\n";
+
+} // namespace
+
+TEST_CASE("A spring of 1e300 acts as a support, not as a mechanism", "[solver][scale]") {
+    // The tip held along x by a spring of 1e300, or by a support: the same run.
+    const std::string load = "[[load]]\nat = [1.0, 0.0]\nfy = -1.0\n";
+    const std::string sprung = cantilever(1.0, 10, 1.0, 1e2, 1.0, load + "[[foundation]]\nkind = \"bilateral\"\nat = [[1.0, 0.0]]\nkx = 1e300\n", small_load_steps);
+    const std::string held = cantilever(1.0, 10, 1.0, 1e2, 1.0, load + "[[support]]\nat = [1.0, 0.0]\nfix = [\"ux\"]\n", small_load_steps);
+    CHECK(mechanism_of(sprung).empty());
+    const Run a = run_scene(sprung), b = run_scene(held);
+    REQUIRE(a.summary.status == RunStatus::completed);
+    REQUIRE(b.summary.status == RunStatus::completed);
+    const double wa = a.node_dof(a.steps.back(), 1.0, 0.0, 1), wb = b.node_dof(b.steps.back(), 1.0, 0.0, 1);
+    CHECK(wa == Approx(wb).epsilon(1e-9));
+    CHECK(std::abs(wb) > 0.1); // PL²/EI = 1 against a held tip: a real deflection
+}
+
+TEST_CASE("A section with EA·L²/EI = 1e12 is no mechanism and bends as a beam", "[solver][scale]") {
+    // PL²/EI = 1e-3: the tip deflection is PL³/3EI to 1e-6 of geometric nonlinearity. The
+    // membrane's round-off floor is about 4e-6 of the load here, so the tolerance sits above it.
+    const std::string toml = cantilever(1.0, 20, 1.0, 1e12, 1.0, "[[load]]\nat = [1.0, 0.0]\nfy = -1.0e-3\n",
+                                        "scheme = \"load_control\"\nincrement = 0.5\ntarget_load_factor = 1.0\nresidual_tolerance = 1e-4\n");
+    CHECK(mechanism_of(toml).empty());
+    const Run r = run_scene(toml);
+    REQUIRE(r.summary.status == RunStatus::completed);
+    CHECK(-r.node_dof(r.steps.back(), 1.0, 0.0, 1) == Approx(1e-3 / 3.0).epsilon(1e-4));
+}
+
+TEST_CASE("Mechanism or double precision: the supports decide what the message says", "[solver][scale]") {
+    const std::string load = "[[load]]\nat = [1.0, 0.0]\nfy = -1.0\n";
+    // A roller where the clamp was: free to slide along x.
+    std::string roller = cantilever(1.0, 4, 1.0, 1e2, 1.0, load, small_load_steps);
+    roller.replace(roller.find("fix = [\"ux\", \"uy\", \"rz\"]"), 24, "fix = [\"uy\", \"rz\"]");
+    const std::string free = mechanism_of(roller);
+    CHECK_THAT(free, Catch::Contains("mechanism before loading"));
+    CHECK_THAT(free, Catch::Contains("a translation along [1, 0]"));
+    // A cantilever 1e300 long: its bending stiffness underflows, though the clamp holds it.
+    const std::string far = mechanism_of(cantilever(1e300, 4, 1.0, 1e2, 1.0, "[[load]]\nat = [1e300, 0.0]\nfy = -1.0\n", small_load_steps));
+    CHECK_THAT(far, Catch::Contains("singular to double precision"));
+    CHECK_THAT(far, !Catch::Contains("mechanism"));
+}
+
+TEST_CASE("Round-off that sets a floor above the tolerance is named as the reason, never a limit at load factor 0", "[solver][scale]") {
+    // 10 000 elements of 1e-4 with EA·L²/EI = 1e6: element terms 12EI/Le³ = 1.2e13 times the
+    // structure's tip stiffness, so rounding the displacements leaves far more than 1e-8 of the
+    // load out of balance.
+    const Run r = run_scene(cantilever(1.0, 10000, 1.0, 1e6, 1.0, "[[load]]\nat = [1.0, 0.0]\nfy = -10.0\n",
+                                       "scheme = \"load_control\"\nincrement = 0.02\ntarget_load_factor = 1.0\nresidual_tolerance = 1e-8\n"));
+    CHECK(r.summary.status == RunStatus::no_convergence);
+    CHECK_THAT(r.summary.reason, Catch::Contains("round-off alone leaves"));
+    CHECK_THAT(r.summary.reason, !Catch::Contains("limit load"));
+}

@@ -3,10 +3,12 @@
 #include "analysis/increment_constraints.hpp"
 #include "analysis/penetration_check.hpp"
 #include "analysis/structure_problem.hpp"
+#include "model/rigid_motions.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace plastica {
@@ -92,18 +94,46 @@ std::string PathFollowing::initial_mechanism() {
     system_.evaluate(u_, ubar_, lambda_, false);
     const bool ok = solver_.factorize(system_.tangent());
     system_.revert();
-    if (ok && solver_.pivot_ratio() > 1e-12) return {};
+    // A pivot within ten round-offs of zero, against its own diagonal entry.
+    if (ok && solver_.pivot_ratio() > 10 * LinearSolver::zero_pivot) return {};
+    std::string where = "an equation";
     const int eq = solver_.weakest_equation();
     for (int dof = 0; dof < system_.dof_count(); ++dof) {
         if (system_.equation(dof) != eq) continue;
         static const char* names[] = {"ux", "uy", "rz"};
         const Node& n = model_.nodes[dof / dofs_per_node];
         std::ostringstream s;
-        s << "the structure is a mechanism before loading: DOF " << names[dof % dofs_per_node]
-          << " of the node at [" << n.x << ", " << n.y << "] is free (add a support or a spring)";
-        return s.str();
+        s << "DOF " << names[dof % dofs_per_node] << " of the node at [" << n.x << ", " << n.y << "]";
+        where = s.str();
     }
-    return "the structure is a mechanism before loading (singular stiffness)";
+    // Singular to double precision is not the same as free: the supports decide which.
+    if (const std::string motion = unrestrained_rigid_motion(model_); !motion.empty())
+        return "the structure is a mechanism before loading: " + where + " is free (add a support or a spring); " + motion;
+    std::ostringstream s;
+    s.precision(2);
+    s << "the stiffness matrix is singular to double precision, although the supports hold every rigid-body "
+         "motion: the pivot of "
+      << where << " is " << solver_.pivot_ratio() << " of its diagonal entry. The stiffnesses of this model span "
+      << "more than the 16 digits of a double (very many or very short elements, a spring or a section far "
+         "stiffer than the rest, or coordinates far from 1): use fewer elements or stiffnesses closer together";
+    return s.str();
+}
+
+double PathFollowing::round_off_floor() const {
+    // A displacement is known to about eps·|u|, so the residual of K·u cannot be brought below
+    // about eps·|K|·|u| (absolute values throughout): relative to the load, that is this
+    // state's floor. K is stored as its lower triangle.
+    const SparseMatrix& K = system_.tangent();
+    const Eigen::VectorXd u = system_.gather(u_).cwiseAbs();
+    Eigen::VectorXd floor = Eigen::VectorXd::Zero(u.size());
+    for (int col = 0; col < K.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
+            const double k = std::abs(it.value());
+            floor[it.row()] += k * u[col];
+            if (it.row() != col) floor[col] += k * u[it.row()];
+        }
+    const double load = std::abs(lambda_) * system_.gather(system_.load()).norm();
+    return load > 0.0 ? std::numeric_limits<double>::epsilon() * floor.norm() / load : 0.0;
 }
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {
@@ -169,12 +199,17 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
             // the structure has passed its limit (a plastic mechanism or buckling); it is read
             // only when the run stops here.
             bool beyond_limit = false;
-            if (giving_up && a.scheme == Scheme::load_control && outcome.failure != NewtonFailure::non_finite) {
+            // Not before the first step: the unloaded tangent was found positive definite, so a
+            // negative pivot there is round-off, not a limit at load factor 0.
+            const bool can_be_limit = a.scheme == Scheme::load_control && step_ > 0;
+            if (giving_up && can_be_limit && outcome.failure != NewtonFailure::non_finite) {
                 if (outcome.negative_pivots_seen > 0)
                     limit_evidence_ = "the tangent beyond it has " + std::to_string(outcome.negative_pivots_seen) +
                                       " negative pivot(s)";
                 beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit();
             }
+            // The failed state's round-off floor, read only when the run stops here.
+            const double floor_at_failure = giving_up && outcome.failure != NewtonFailure::non_finite ? round_off_floor() : 0.0;
             u_ = u_saved;
             lambda_ = lambda_saved;
             system_.revert();
@@ -188,12 +223,19 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
                 summary.status = RunStatus::non_finite;
                 why << "non-finite state in step " << step_ + 1;
                 if (!system_.non_finite_where().empty()) why << " at " << system_.non_finite_where();
-            } else if (beyond_limit || (a.scheme == Scheme::load_control && tangent_shows_limit())) {
+            } else if (beyond_limit || (can_be_limit && tangent_shows_limit())) {
                 summary.status = RunStatus::limit_load;
                 why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
             } else {
                 why << "no convergence in step " << step_ + 1 << " at load factor " << lambda_ << " ("
-                    << to_string(outcome.failure) << " with the increment cut to " << std::abs(h) << ")";
+                    << to_string(outcome.failure) << " with the increment cut to " << std::abs(h)
+                    << "; the residual ended at " << outcome.residual << " of the load, residual_tolerance "
+                    << a.residual_tolerance << ")";
+                if (floor_at_failure >= 0.1 * a.residual_tolerance)
+                    why << ": round-off alone leaves about " << floor_at_failure
+                        << " of the load out of balance in this model (its stiffest terms times the rounding "
+                           "of its displacements), so the tolerance cannot be met; use fewer or longer "
+                           "elements, or a residual_tolerance above that";
             }
             summary.reason = why.str();
             break;

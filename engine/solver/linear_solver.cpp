@@ -2,6 +2,7 @@
 
 #include <Eigen/OrderingMethods>
 #include <cmath>
+#include <limits>
 
 namespace plastica {
 
@@ -34,15 +35,27 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
     // Inertia and the weakest pivot, also when a zero pivot stopped the factorisation (its D
     // holds that zero): it names the DOF of a mechanism.
     if (ldlt_.vectorD().size() == K.rows()) {
+        // Each pivot against its own diagonal entry: what elimination left of that equation's
+        // stiffness. Scale-free: a spring of 1e300 beside a beam, or EA 1e12 times EI, does not
+        // make the beam's pivots look small, as a ratio to the largest pivot would.
         const Eigen::VectorXd& D = ldlt_.vectorD();
-        const double largest = D.cwiseAbs().maxCoeff();
+        negative_pivots_ = 0;
+        pivot_ratio_ = std::numeric_limits<double>::infinity();
         Eigen::Index smallest_at = 0;
-        const double smallest = D.cwiseAbs().minCoeff(&smallest_at);
-        negative_pivots_ = static_cast<int>((D.array() < 0.0).count());
-        pivot_ratio_ = largest > 0.0 ? smallest / largest : 0.0;
+        const Eigen::VectorXd diagonals = K.diagonal();
+        for (Eigen::Index k = 0; k < D.size(); ++k) {
+            const double diagonal = std::abs(diagonals[order_inverse_.indices()[k]]);
+            const double ratio = diagonal > 0.0 ? std::abs(D[k]) / diagonal : 0.0;
+            // A pivot within round-off of zero has no sign.
+            if (D[k] < 0.0 && ratio > zero_pivot) ++negative_pivots_;
+            if (!(ratio >= pivot_ratio_)) {
+                pivot_ratio_ = ratio;
+                smallest_at = k;
+            }
+        }
         // D is in the permuted order; report the equation it belongs to.
         weakest_ = order_inverse_.indices()[smallest_at];
-        if (ldlt_.info() == Eigen::Success && std::isfinite(pivot_ratio_) && pivot_ratio_ > 1e-15) return true;
+        if (ldlt_.info() == Eigen::Success && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
     }
     // A zero pivot: either a singular matrix or an unlucky order for LDLᵀ without pivoting.
     if (!lu_analysed_) {

@@ -20,8 +20,12 @@ public:
     // must stay the one of the first call (the assembler keeps it fixed).
     bool factorize(const SparseMatrix& K);
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+    // Pivots below zero_pivot of their own diagonal entry are round-off: neither counted as
+    // negative nor trusted (LU takes over).
+    static constexpr double zero_pivot = 1e-15;
     int negative_pivots() const { return negative_pivots_; }
-    // Index of the smallest |pivot| relative to the largest: the DOF that is nearly free.
+    // The equation whose pivot is smallest relative to its diagonal entry: the DOF that is
+    // nearly free.
     int weakest_equation() const { return weakest_; }
     double pivot_ratio() const { return pivot_ratio_; }
 

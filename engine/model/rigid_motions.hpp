@@ -1,0 +1,17 @@
+// Whether supports, prescribed displacements and springs hold every rigid-body motion of every
+// connected part of the structure. Beam elements join their nodes rigidly (three DOFs shared),
+// so a part is a mechanism exactly when one of its three rigid motions is free: a test of
+// geometry and supports alone, free of the stiffness values and of round-off. It tells a real
+// mechanism from a stiffness matrix that is singular only to double precision.
+#pragma once
+
+#include "model/model.hpp"
+
+#include <string>
+
+namespace plastica {
+
+// Empty when every part is held; else which part moves and how, in words.
+std::string unrestrained_rigid_motion(const Model& model);
+
+} // namespace plastica
