@@ -30,7 +30,7 @@ BENCHMARK(element_tangent);
 // The Strain Compatibility Method: the deformation that carries (N, M) past first yield.
 void section_solve(benchmark::State& state) {
     SectionSpec spec = rectangle_section(1e9, 9.128709291752768, 0.010954451150103323, static_cast<int>(state.range(0)));
-    spec.steel = SteelSpec{1e9, 36518.0, 0.0};
+    spec.steel = bilinear_steel(1e9, 36518.0, 0.0);
     FibreSection section(spec);
     for (auto _ : state) {
         const ScmResult r = section.solve_for_forces(500.0, 9.0);

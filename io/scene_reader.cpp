@@ -3,6 +3,8 @@
 
 #include "toml_table_reader.hpp"
 
+#include "material/material_registry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -153,6 +155,7 @@ private:
             m.E = r.positive("E");
             m.density = r.number_or("density", 0.0);
             if (m.density < 0.0) r.fail("density", "expected a density of at least 0");
+            std::vector<std::string> keys{"name", "E", "fy", "ultimate_strain", "density", "law"};
             if (r.has("fy")) {
                 SteelSpec s;
                 s.E = m.E;
@@ -160,9 +163,29 @@ private:
                 s.ultimate_strain = r.number_or("ultimate_strain", 0.0);
                 if (s.ultimate_strain < 0.0 || (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E))
                     r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
+                // The law and the keys of its own, as the registry lists them.
+                std::vector<std::string> laws;
+                for (const MaterialLaw& law : material_laws()) laws.push_back(law.name);
+                s.law = r.choice("law", laws, "bilinear");
+                const MaterialLaw& law = *find_material_law(s.law);
+                for (const std::string& key : law.parameters) {
+                    s.parameters[key] = r.number(key);
+                    keys.push_back(key);
+                }
+                try {
+                    make_material(s, 0.0);
+                } catch (const MaterialParameterError& e) {
+                    r.fail(e.key, e.what());
+                }
                 m.steel = s;
+            } else if (r.has("law")) {
+                r.fail("law", "a material law needs a yield stress 'fy'");
             }
-            r.finish({"name", "E", "fy", "ultimate_strain", "density"});
+            for (const MaterialLaw& law : material_laws())
+                for (const std::string& key : law.parameters)
+                    if (r.has(key) && std::find(keys.begin(), keys.end(), key) == keys.end())
+                        r.fail(key, "a parameter of law = \"" + std::string(law.name) + "\", not of this material's law");
+            r.finish(keys);
             materials_[name] = m;
         }
     }
@@ -245,8 +268,11 @@ private:
             }
             if (r.has("plastic"))
                 r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
+            // Hinges by default for an inelastic material (the seed's method), unless its law
+            // hardens past the capacity that hinges hold.
+            const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
             const std::string plasticity =
-                r.choice("plasticity", {"none", "hinges", "distributed"}, m->second.steel ? "hinges" : "none");
+                r.choice("plasticity", {"none", "hinges", "distributed"}, !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
             if (plasticity != "none" && !m->second.steel)
                 r.fail("plasticity", "an inelastic section needs a material with 'fy'");
             if (plasticity == "distributed") {
@@ -257,6 +283,9 @@ private:
                     r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
                 s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
             }
+            if (s.plasticity == Plasticity::hinges && hardens)
+                r.fail("plasticity", "refined plastic hinges hold the moment at the fully plastic capacity; material law '" +
+                                         m->second.steel->law + "' hardens past it: use plasticity = \"distributed\"");
             if (s.plasticity != Plasticity::none) s.steel = m->second.steel;
             else s.fibres.clear();
             s.name = name;

@@ -135,11 +135,16 @@ std::string TomlTableReader::string_or(const std::string& key, const std::string
 
 std::string TomlTableReader::choice(const std::string& key, std::initializer_list<const char*> options,
                                     const std::string& fallback) {
+    return choice(key, std::vector<std::string>(options.begin(), options.end()), fallback);
+}
+
+std::string TomlTableReader::choice(const std::string& key, const std::vector<std::string>& options,
+                                    const std::string& fallback) {
     const std::string v = string_or(key, fallback);
     std::string list;
-    for (const char* o : options) {
+    for (const std::string& o : options) {
         if (v == o) return v;
-        list += list.empty() ? std::string("'") + o + "'" : std::string(", '") + o + "'";
+        list += (list.empty() ? "'" : ", '") + o + "'";
     }
     fail(key, "expected one of " + list + ", got '" + v + "'");
 }
@@ -170,7 +175,10 @@ const toml::array* TomlTableReader::array(const std::string& key) {
 }
 
 void TomlTableReader::finish(std::initializer_list<const char*> known_keys) const {
-    std::vector<std::string> known(known_keys.begin(), known_keys.end());
+    finish(std::vector<std::string>(known_keys.begin(), known_keys.end()));
+}
+
+void TomlTableReader::finish(const std::vector<std::string>& known) const {
     for (auto&& [k, v] : table_) {
         const std::string key(k.str());
         if (used_.count(key) || std::find(known.begin(), known.end(), key) != known.end()) continue;

@@ -37,6 +37,7 @@ public:
     std::string string_or(const std::string& key, const std::string& fallback);
     std::string choice(const std::string& key, std::initializer_list<const char*> options,
                        const std::string& fallback);
+    std::string choice(const std::string& key, const std::vector<std::string>& options, const std::string& fallback);
     std::array<double, 2> point(const std::string& key);
     const toml::node* node(const std::string& key);            // marks the key as used
     const toml::table* table(const std::string& key);
@@ -44,6 +45,7 @@ public:
 
     // Throws for the first key that was never read.
     void finish(std::initializer_list<const char*> known_keys) const;
+    void finish(const std::vector<std::string>& known_keys) const;
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 

@@ -77,7 +77,7 @@ TEST_CASE("The geometric stiffness vanishes when the element carries no force", 
 
 TEST_CASE("The plastic hinge tangent equals a finite difference within one loading regime", "[element][plasticity]") {
     SectionSpec s = rectangle_section(200e3, 10.0, 20.0, 20);
-    s.steel = SteelSpec{200e3, 250.0, 0.0};
+    s.steel = bilinear_steel(200e3, 250.0, 0.0);
     CorotationalBeam beam({0.0, 0.0}, {1000.0, 0.0}, std::make_unique<PlasticHingeLaw>(s, 1000.0));
     Vector6 d;
     d << 0.0, 0.0, 0.0, 0.0, 0.5, 0.0004; // elastic regime: every η = 1

@@ -12,13 +12,13 @@ constexpr double E = 200e3, fy = 250.0, b = 10.0, h = 20.0;
 
 FibreSection rectangle(int fibres) {
     SectionSpec s = rectangle_section(E, b, h, fibres);
-    s.steel = SteelSpec{E, fy, 0.0};
+    s.steel = bilinear_steel(E, fy, 0.0);
     return FibreSection(s);
 }
 } // namespace
 
 TEST_CASE("Bilinear steel yields at fy, unloads elastically and keeps its plastic strain", "[material]") {
-    BilinearSteel m(SteelSpec{E, fy, 0.02}, 0.0);
+    BilinearSteel m(bilinear_steel(E, fy, 0.02), 0.0);
     const double ey = fy / E;
     m.set_trial_strain(0.5 * ey);
     CHECK(m.stress() == Approx(0.5 * fy));
@@ -74,7 +74,7 @@ TEST_CASE("Unequal fibres: the plastic capacity is exact between its corners, bo
     // neutral axis through a fibre, that fibre's stress balances N and the others sit at ±fy.
     SectionSpec spec;
     spec.E = 1.0;
-    spec.steel = SteelSpec{1.0, 1.0, 0.0};
+    spec.steel = bilinear_steel(1.0, 1.0, 0.0);
     spec.fibres = {{1.0, -1.0, 0.0}, {1.0, 0.0, 0.0}, {2.0, 1.0, 0.0}};
     const FibreSection s(spec);
     REQUIRE(s.axial_capacity_tension() == 4.0);

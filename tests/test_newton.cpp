@@ -155,7 +155,7 @@ TEST_CASE("One plastic hinge driven past its capacity: quadratic steps, moment h
     s.E = 2e8;
     s.area = 200.0;
     s.inertia = 10.0 * 8000.0 / 12.0;
-    s.steel = SteelSpec{2e8, 250.0, 0.0};
+    s.steel = bilinear_steel(2e8, 250.0, 0.0);
     for (int i = 0; i < 10; ++i) s.fibres.push_back({20.0, -10.0 + 2.0 * i + 1.0, 0.0});
     const double Mp = 250.0 * 10.0 * 400.0 / 4.0, L0 = 1000.0;
     struct Hinge final : ToyProblem {

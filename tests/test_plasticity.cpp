@@ -110,7 +110,7 @@ fy = -1.0
 
 TEST_CASE("Load, yield, unload: the residual rotation is the plastic rotation, unloading is elastic", "[plasticity]") {
     SectionSpec s = rectangle_section(2e8, 10.0, 20.0, 10);
-    s.steel = SteelSpec{2e8, 250.0, 0.0};
+    s.steel = bilinear_steel(2e8, 250.0, 0.0);
     const double L0 = 1000.0, EI = s.E * s.inertia;
     PlasticHingeLaw law(s, L0);
     Eigen::Vector3d q;

@@ -118,6 +118,15 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"unused node", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n", "node 1 belongs to no element", 26},
         {"duplicate node id", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n[[node]]\nid = 1\nx = 4.0\ny = 3.0\n", "node id 1 is used twice", 31},
         {"coincident element nodes", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n[[element]]\nnodes = [1, 1]\nsection = \"s\"\n", "an element's two nodes coincide", 31},
+        {"unknown material law", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nlaw = \"concrete\""), "'material[1].law': expected one of 'bilinear', 'kinematic_hardening', got 'concrete'", 7},
+        {"law without its parameter", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nlaw = \"kinematic_hardening\""), "missing required key 'hardening_ratio'", 3},
+        {"law parameter out of range", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nlaw = \"kinematic_hardening\"\nhardening_ratio = 1.0"), "'material[1].hardening_ratio': expected a ratio b = Esh/E in [0, 1)", 8},
+        {"parameter of another law", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nhardening_ratio = 0.01"), "a parameter of law = \"kinematic_hardening\", not of this material's law", 7},
+        {"law without fy", replaced("E = 1000.0", "E = 1000.0\nlaw = \"bilinear\""), "a material law needs a yield stress 'fy'", 6},
+        {"hinges on a hardening law", [] {
+             std::string t = replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nlaw = \"kinematic_hardening\"\nhardening_ratio = 0.01");
+             return t.replace(t.find("I = 1.0"), 7, "I = 1.0\nplasticity = \"hinges\"");
+         }(), "refined plastic hinges hold the moment at the fully plastic capacity", 14},
         {"bad ultimate strain", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nultimate_strain = 0.0001"), "expected 0 (never fails) or a strain above fy/E", 7},
         {"bilateral foundation with a base", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.0]\n", "a base line belongs to a unilateral foundation", 29},
         {"fibres off the centroid", replaced("A = 1.0\nI = 1.0", "shape = \"fibres\"\nfibres = [[1.0, 0.5], [1.0, 1.5]]"), "measured from the centroid", 10},

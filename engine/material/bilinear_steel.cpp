@@ -10,14 +10,14 @@ BilinearSteel::BilinearSteel(const SteelSpec& spec, double residual_stress)
     commit();
 }
 
-void BilinearSteel::set_trial_strain(double strain) {
+StressTangent BilinearSteel::set_trial_strain(double strain) {
     State s = committed_;
     s.strain = strain;
     if (s.failed) {
         s.stress = 0.0;
         s.tangent = 0.0;
         trial_ = s;
-        return;
+        return {s.stress, s.tangent};
     }
     // The residual stress acts as an initial elastic strain of the fibre.
     const double total = strain + eps_residual_;
@@ -26,7 +26,7 @@ void BilinearSteel::set_trial_strain(double strain) {
         s.stress = 0.0;
         s.tangent = 0.0;
         trial_ = s;
-        return;
+        return {s.stress, s.tangent};
     }
     const double elastic_stress = E_ * (total - s.plastic_strain);
     if (std::abs(elastic_stress) <= fy_) {
@@ -42,14 +42,12 @@ void BilinearSteel::set_trial_strain(double strain) {
         s.branch = static_cast<int>(sign);
     }
     trial_ = s;
+    return {s.stress, s.tangent};
 }
 
-void BilinearSteel::set_trial_strain_on_branch(double strain) {
+StressTangent BilinearSteel::set_trial_strain_on_branch(double strain) {
     const int branch = trial_.branch;
-    if (committed_.failed) {
-        set_trial_strain(strain);
-        return;
-    }
+    if (committed_.failed) return set_trial_strain(strain);
     State s = committed_;
     s.strain = strain;
     s.branch = branch;
@@ -63,6 +61,7 @@ void BilinearSteel::set_trial_strain_on_branch(double strain) {
         s.tangent = 0.0;
     }
     trial_ = s;
+    return {s.stress, s.tangent};
 }
 
 bool BilinearSteel::branch_consistent() const {

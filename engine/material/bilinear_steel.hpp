@@ -3,32 +3,32 @@
 // the plastic strain εp. Past the ultimate strain εu the fibre has failed and carries nothing.
 #pragma once
 
+#include "material/uniaxial_material.hpp"
 #include "model/model.hpp"
 
 namespace plastica {
 
-class BilinearSteel {
+class BilinearSteel final : public UniaxialMaterial {
 public:
     BilinearSteel() = default;
     BilinearSteel(const SteelSpec& spec, double residual_stress);
 
-    // Sets the trial total strain (mechanical strain measured from the unstressed state).
-    void set_trial_strain(double strain);
-    // The same, kept on the branch (elastic, yielding in tension or in compression) of the
-    // previous trial: the law is then linear, as a frozen active set inside Newton.
-    void set_trial_strain_on_branch(double strain);
-    // Whether the trial state satisfies the law it was kept to: an elastic stress within ±fy,
-    // a plastic strain that grows in the direction of yielding.
-    bool branch_consistent() const;
-    double stress() const { return trial_.stress; }
-    double tangent() const { return trial_.tangent; }
-    bool failed() const { return trial_.failed; }
-    double plastic_strain() const { return trial_.plastic_strain; }
-    double strain() const { return trial_.strain; }
-    bool yielding() const { return trial_.tangent == 0.0 && !trial_.failed; }
+    std::unique_ptr<UniaxialMaterial> clone() const override { return std::make_unique<BilinearSteel>(*this); }
+    StressTangent set_trial_strain(double strain) override;
+    StressTangent set_trial_strain_on_branch(double strain) override;
+    // An elastic stress within ±fy, a plastic strain that grows in the direction of yielding.
+    bool branch_consistent() const override;
+    double stress() const override { return trial_.stress; }
+    double tangent() const override { return trial_.tangent; }
+    bool failed() const override { return trial_.failed; }
+    double plastic_strain() const override { return trial_.plastic_strain; }
+    double strain() const override { return trial_.strain; }
+    bool yielding() const override { return trial_.tangent == 0.0 && !trial_.failed; }
+    double limit_stress(double) const override { return fy_; }
+    double elastic_modulus() const override { return E_; }
 
-    void commit() { committed_ = trial_; }
-    void revert() { trial_ = committed_; }
+    void commit() override { committed_ = trial_; }
+    void revert() override { trial_ = committed_; }
 
 private:
     struct State {

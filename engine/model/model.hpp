@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,11 +18,24 @@ struct Node {
 };
 
 // Bilinear steel (seed eq. 6): elastic inside ±εy, ±fy up to ±εu, failed past εu.
+// An inelastic material: its law (material/material_registry.cpp lists them), the parameters
+// every law has, and those of its own (by key, as the scene names them).
 struct SteelSpec {
     double E = 0.0;
     double fy = 0.0;
     double ultimate_strain = 0.0; // εu; 0 means "never fails"
+    std::string law = "bilinear";
+    std::map<std::string, double> parameters;
 };
+
+// The seed's elastic–perfectly plastic steel.
+inline SteelSpec bilinear_steel(double E, double fy, double ultimate_strain = 0.0) {
+    SteelSpec s;
+    s.E = E;
+    s.fy = fy;
+    s.ultimate_strain = ultimate_strain;
+    return s;
+}
 
 struct Fibre {
     double area = 0.0;

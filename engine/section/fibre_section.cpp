@@ -1,5 +1,7 @@
 #include "section/fibre_section.hpp"
 
+#include "material/material_registry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -40,13 +42,16 @@ std::vector<Point2> convex_hull(std::vector<Point2> points) {
 FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
     const SteelSpec& steel = *spec.steel;
     E_ = steel.E;
+    // Stiffness and capacity from each fibre's own material.
     for (const Fibre& f : spec.fibres) {
-        fibres_.push_back({f.area, f.y, steel.fy, f.residual_stress, BilinearSteel(steel, f.residual_stress)});
-        ea0_ += steel.E * f.area;
-        ei0_ += steel.E * f.area * f.y * f.y;
-        ny_tension_ += steel.fy * f.area;
+        MaterialHolder material(make_material(steel, f.residual_stress));
+        const double E = material->elastic_modulus();
+        fibres_.push_back({f.area, f.y, material->limit_stress(1.0), material->limit_stress(-1.0), f.residual_stress, std::move(material)});
+        ea0_ += E * f.area;
+        ei0_ += E * f.area * f.y * f.y;
+        ny_tension_ += fibres_.back().limit_tension * f.area;
+        ny_compression_ += fibres_.back().limit_compression * f.area;
     }
-    ny_compression_ = ny_tension_;
     build_capacity_curves();
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
@@ -63,7 +68,7 @@ SectionResponse FibreSection::set_trial_deformation_on_branches(double eps0, dou
 
 bool FibreSection::branches_consistent() const {
     return std::all_of(fibres_.begin(), fibres_.end(),
-                       [](const FibrePoint& f) { return f.material.branch_consistent(); });
+                       [](const FibrePoint& f) { return f.material->branch_consistent(); });
 }
 
 template <bool on_branches>
@@ -73,12 +78,10 @@ SectionResponse FibreSection::set_trial(double eps0, double curvature) {
     SectionResponse r;
     double k11 = 0.0, k12 = 0.0, k22 = 0.0;
     for (FibrePoint& f : fibres_) {
-        if constexpr (on_branches)
-            f.material.set_trial_strain_on_branch(eps0 - f.y * curvature);
-        else
-            f.material.set_trial_strain(eps0 - f.y * curvature);
-        const double s = f.material.stress() * f.area;
-        const double t = f.material.tangent() * f.area;
+        const StressTangent st = on_branches ? f.material->set_trial_strain_on_branch(eps0 - f.y * curvature)
+                                             : f.material->set_trial_strain(eps0 - f.y * curvature);
+        const double s = st.stress * f.area;
+        const double t = st.tangent * f.area;
         r.N += s;
         r.M -= s * f.y;
         k11 += t;
@@ -142,13 +145,13 @@ ScmResult FibreSection::solve_for_forces(double N, double M, int max_iterations)
 }
 
 void FibreSection::commit() {
-    for (FibrePoint& f : fibres_) f.material.commit();
+    for (FibrePoint& f : fibres_) f.material->commit();
     eps0_c_ = eps0_t_;
     phi_c_ = phi_t_;
 }
 
 void FibreSection::revert() {
-    for (FibrePoint& f : fibres_) f.material.revert();
+    for (FibrePoint& f : fibres_) f.material->revert();
     eps0_t_ = eps0_c_;
     phi_t_ = phi_c_;
 }
@@ -170,7 +173,8 @@ void FibreSection::build_capacity_curves() {
             CapacityPoint p;
             for (std::size_t m = 0; m < order.size(); ++m) {
                 const FibrePoint& f = fibres_[order[m]];
-                const double s = (m < k ? below_sign : -below_sign) * f.fy;
+                const double sign = m < k ? below_sign : -below_sign;
+                const double s = sign * (sign > 0.0 ? f.limit_tension : f.limit_compression);
                 p.N += s * f.area;
                 p.M -= s * f.area * f.y;
             }
@@ -226,12 +230,12 @@ double FibreSection::first_yield_moment(double N) const {
     // Elastic stresses σ = N·E/EA + M·E·y/EI (with M positive compressing +y) reach fy first at
     // the fibre with the smallest margin; residual stresses are part of the initial stress.
     double best = std::numeric_limits<double>::infinity();
-    const double E = E_;
     for (const FibrePoint& f : fibres_) {
+        const double E = f.material->elastic_modulus();
         const double axial = N * E / ea0_ + f.residual_stress;
         const double per_moment = -E * f.y / ei0_;
         if (per_moment == 0.0) continue;
-        const double limit = per_moment > 0.0 ? (f.fy - axial) / per_moment : (-f.fy - axial) / per_moment;
+        const double limit = per_moment > 0.0 ? (f.limit_tension - axial) / per_moment : (-f.limit_compression - axial) / per_moment;
         best = std::min(best, limit);
     }
     return best;
@@ -264,19 +268,19 @@ std::vector<MomentCurvaturePoint> FibreSection::moment_curvature(double N, doubl
 
 int FibreSection::failed_fibres() const {
     return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
-                                          [](const FibrePoint& f) { return f.material.failed(); }));
+                                          [](const FibrePoint& f) { return f.material->failed(); }));
 }
 
 int FibreSection::yielded_fibres() const {
     return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
-                                          [](const FibrePoint& f) { return f.material.yielding(); }));
+                                          [](const FibrePoint& f) { return f.material->yielding(); }));
 }
 
 double FibreSection::yielded_area_share() const {
     double yielded = 0.0, total = 0.0;
     for (const FibrePoint& f : fibres_) {
         total += f.area;
-        if (f.material.yielding() || f.material.failed()) yielded += f.area;
+        if (f.material->yielding() || f.material->failed()) yielded += f.area;
     }
     return total > 0.0 ? yielded / total : 0.0;
 }

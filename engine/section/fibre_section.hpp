@@ -5,7 +5,7 @@
 // EI_T = f22 − f12 f21 / f11. The capacity M_p(N) is the fully plastic limit of the fibres.
 #pragma once
 
-#include "material/bilinear_steel.hpp"
+#include "material/uniaxial_material.hpp"
 #include "section/capacity_curve.hpp"
 #include "model/model.hpp"
 
@@ -45,7 +45,7 @@ public:
 
     // Trial state of every fibre from the section deformation; returns resultants and tangent.
     SectionResponse set_trial_deformation(double eps0, double curvature);
-    // The same with every fibre kept on its previous branch (BilinearSteel), and whether the
+    // The same with every fibre kept on its previous branch (UniaxialMaterial), and whether the
     // fibres are consistent with the branches they were kept to.
     SectionResponse set_trial_deformation_on_branches(double eps0, double curvature);
     bool branches_consistent() const;
@@ -86,9 +86,10 @@ private:
     struct FibrePoint {
         double area;
         double y;
-        double fy;
+        double limit_tension;     // the material's limit stresses (magnitudes)
+        double limit_compression;
         double residual_stress;
-        BilinearSteel material;
+        MaterialHolder material;
     };
     SectionSpec spec_; // kept to rebuild an unstressed copy
     std::vector<FibrePoint> fibres_;

@@ -21,6 +21,11 @@ void LinearSolver::analyse(const SparseMatrix& K) {
     source_.resize(static_cast<std::size_t>(permuted_.nonZeros()));
     for (Eigen::Index k = 0; k < permuted_.nonZeros(); ++k)
         source_[static_cast<std::size_t>(k)] = static_cast<int>(permuted_.valuePtr()[k]);
+    // Where each permuted equation's diagonal entry sits among K's values (−1: none).
+    diagonal_slot_.assign(static_cast<std::size_t>(K.rows()), -1);
+    for (int col = 0; col < K.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+            if (it.row() == col) diagonal_slot_[static_cast<std::size_t>(order_.indices()[col])] = static_cast<int>(&it.value() - K.valuePtr());
     ldlt_.analyzePattern(permuted_);
     analysed_ = true;
 }
@@ -42,9 +47,9 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
         negative_pivots_ = 0;
         pivot_ratio_ = std::numeric_limits<double>::infinity();
         Eigen::Index smallest_at = 0;
-        const Eigen::VectorXd diagonals = K.diagonal();
         for (Eigen::Index k = 0; k < D.size(); ++k) {
-            const double diagonal = std::abs(diagonals[order_inverse_.indices()[k]]);
+            const int slot = diagonal_slot_[static_cast<std::size_t>(k)];
+            const double diagonal = slot >= 0 ? std::abs(values[slot]) : 0.0;
             const double ratio = diagonal > 0.0 ? std::abs(D[k]) / diagonal : 0.0;
             // A pivot within round-off of zero has no sign.
             if (D[k] < 0.0 && ratio > zero_pivot) ++negative_pivots_;

@@ -37,6 +37,7 @@ private:
     Permutation order_inverse_; // equation at each new position
     SparseMatrix permuted_;     // upper triangle of order_·K·order_ᵀ
     std::vector<int> source_;   // for each value of permuted_, its index in K's values
+    std::vector<int> diagonal_slot_; // for each permuted equation, its diagonal's index in K's values
     Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt_;
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
     bool analysed_ = false;

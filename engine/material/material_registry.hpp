@@ -1,0 +1,38 @@
+// The fibre laws a scene may name (`[[material]] law = …`): each with the keys of its own and a
+// maker. Adding a law: its file pair, and one line in material_registry.cpp.
+#pragma once
+
+#include "material/uniaxial_material.hpp"
+#include "model/model.hpp"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace plastica {
+
+// A law's parameter out of its range: the key, and what was expected.
+struct MaterialParameterError : std::invalid_argument {
+    MaterialParameterError(std::string key, const std::string& what) : std::invalid_argument(what), key(std::move(key)) {}
+    std::string key;
+};
+
+struct MaterialLaw {
+    const char* name;
+    std::vector<std::string> parameters; // keys of this law beyond E, fy and ultimate_strain
+    const char* description;
+    // Throws MaterialParameterError for a parameter out of range.
+    std::unique_ptr<UniaxialMaterial> (*make)(const SteelSpec& spec, double residual_stress);
+    // Whether the moment of its sections stops at the fully plastic capacity (refined plastic
+    // hinges model nothing else).
+    bool perfectly_plastic;
+};
+
+const std::vector<MaterialLaw>& material_laws();
+// Null for an unknown name.
+const MaterialLaw* find_material_law(const std::string& name);
+// The fibre of a section: residual_stress is its initial stress.
+std::unique_ptr<UniaxialMaterial> make_material(const SteelSpec& spec, double residual_stress);
+
+} // namespace plastica
