@@ -26,4 +26,18 @@ inline std::string displacement_control(double x, double y, const std::string& d
            "\nmax_steps = 2000\n";
 }
 
+// A cantilever 1000 long of a 10 × 20 rectangle (400 layers, distributed plasticity with four
+// points) under a tip load P in 50 equal steps; material_keys add to E and fy (a law).
+inline std::string tip_loaded_rectangle_cantilever(double E, double fy, const std::string& material_keys, int elements, double P) {
+    return "[scene]\nname = \"tip\"\n[[material]]\nname = \"steel\"\nE = " + num(E) + "\nfy = " + num(fy) + "\n" +
+           material_keys +
+           "[[section]]\nname = \"s\"\nmaterial = \"steel\"\nshape = \"rectangle\"\nb = 10.0\nh = 20.0\nfibres = 400\n"
+           "plasticity = \"distributed\"\nintegration_points = 4\n"
+           "[[line]]\nstart = [0.0, 0.0]\nend = [1000.0, 0.0]\nelements = " + std::to_string(elements) +
+           "\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
+           "[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n"
+           "[analysis]\nscheme = \"load_control\"\nincrement = " + num(P / 50.0) +
+           "\nadaptive = false\ntarget_load_factor = " + num(P) + "\nresidual_tolerance = 1e-10\nmax_steps = 100\n";
+}
+
 } // namespace plastica::testing

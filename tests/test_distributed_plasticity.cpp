@@ -122,15 +122,7 @@ TEST_CASE("Elastic–plastic cantilever under a tip load: the deflection of the 
     // 400 layers leave 1e-5 relative, below the mesh errors measured here.
     std::vector<double> errors;
     for (int elements : {4, 8, 16, 32}) {
-        const Run r = run_scene(
-            "[scene]\nname = \"tip\"\n[[material]]\nname = \"steel\"\nE = " + num(E) + "\nfy = " + num(fy) +
-            "\n[[section]]\nname = \"s\"\nmaterial = \"steel\"\nshape = \"rectangle\"\nb = 10.0\nh = 20.0\nfibres = 400\n"
-            "plasticity = \"distributed\"\nintegration_points = 4\n"
-            "[[line]]\nstart = [0.0, 0.0]\nend = [1000.0, 0.0]\nelements = " + std::to_string(elements) +
-            "\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
-            "[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n"
-            "[analysis]\nscheme = \"load_control\"\nincrement = " + num(P / 50.0) +
-            "\nadaptive = false\ntarget_load_factor = " + num(P) + "\nresidual_tolerance = 1e-10\nmax_steps = 100\n");
+        const Run r = run_scene(tip_loaded_rectangle_cantilever(E, fy, "", elements, P));
         REQUIRE(r.summary.status == RunStatus::completed);
         const double tip = -r.node_dof(r.steps.back(), 1000.0, 0.0, 1);
         errors.push_back(std::abs(tip - exact) / exact);

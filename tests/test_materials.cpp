@@ -1,6 +1,7 @@
 // Fibre laws behind the uniaxial-material interface, against closed forms: the hardening law's
 // cyclic path, the registry, a section's moment–curvature and a cantilever's deflection.
 #include "analysis_helpers.hpp"
+#include "plastic_beam_scenes.hpp"
 #include "material/material_registry.hpp"
 #include "section/fibre_section.hpp"
 
@@ -149,16 +150,8 @@ TEST_CASE("A hardening cantilever with distributed plasticity deflects as ∫κ(
     const double exact = integrate(0.0, My / P) + integrate(My / P, L);
     std::vector<double> errors;
     for (int elements : {2, 4, 8, 16}) {
-        const Run r = run_scene(
-            "[scene]\nname = \"tip\"\n[[material]]\nname = \"steel\"\nE = " + num(Es) + "\nfy = " + num(fys) +
-            "\nlaw = \"kinematic_hardening\"\nhardening_ratio = " + num(b) +
-            "\n[[section]]\nname = \"s\"\nmaterial = \"steel\"\nshape = \"rectangle\"\nb = 10.0\nh = 20.0\nfibres = 400\n"
-            "plasticity = \"distributed\"\nintegration_points = 4\n"
-            "[[line]]\nstart = [0.0, 0.0]\nend = [1000.0, 0.0]\nelements = " + std::to_string(elements) +
-            "\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
-            "[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n"
-            "[analysis]\nscheme = \"load_control\"\nincrement = " + num(P / 50.0) +
-            "\nadaptive = false\ntarget_load_factor = " + num(P) + "\nresidual_tolerance = 1e-10\nmax_steps = 100\n");
+        const Run r = run_scene(tip_loaded_rectangle_cantilever(
+            Es, fys, "law = \"kinematic_hardening\"\nhardening_ratio = " + num(b) + "\n", elements, P));
         REQUIRE(r.summary.status == RunStatus::completed);
         const double tip = -r.node_dof(r.steps.back(), 1000.0, 0.0, 1);
         errors.push_back(std::abs(tip - exact) / exact);
