@@ -7,7 +7,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <thread>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -82,5 +86,60 @@ void process_sweep(benchmark::State& state) {
     state.counters["runs_per_second"] = benchmark::Counter(9.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(process_sweep)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+namespace {
+
+// The mean of sweep.csv's last column: each run's own time (read, analysis, curve output).
+double mean_run_seconds(const fs::path& csv) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line); // header
+    double sum = 0.0;
+    int rows = 0;
+    while (std::getline(in, line)) {
+        sum += std::stod(line.substr(line.rfind(',') + 1));
+        ++rows;
+    }
+    return rows > 0 ? sum / rows : 0.0;
+}
+
+} // namespace
+
+// The README's worked example: 1 000 runs of the 50-element ring with fy sampled, on every core,
+// in-process (argument 0) or as jobs through GNU Parallel (1). Counters: runs per second, and the
+// per-run overhead beyond a run's own work (cores × wall / runs − its mean time in sweep.csv).
+void process_sweep_1000(benchmark::State& state) {
+    const bool through_parallel = state.range(0) != 0;
+    const fs::path dir = fs::temp_directory_path() / "plastica_bench_sweep_1000";
+    const std::vector<std::string> sweep{"sweep", scene("ring_inelastic"), "--sample", "material[steel].fy=normal:36518:3000",
+                                         "--samples", "1000", "--seed", "11", "--no-charts", "-o", dir.string()};
+    const double cores = static_cast<double>(std::thread::hardware_concurrency());
+    double wall = 0.0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        fs::remove_all(dir);
+        std::vector<std::string> args = sweep;
+        if (through_parallel) {
+            args.push_back("--emit");
+            args.push_back("jobs");
+            expect_success(state, plastica(args));
+        }
+        state.ResumeTiming();
+        const auto start = std::chrono::steady_clock::now();
+        if (through_parallel) {
+            const std::string command = "parallel --will-cite < " + (dir / "jobs.txt").string() + " > /dev/null 2>&1";
+            if (std::system(command.c_str()) != 0) state.SkipWithError("GNU Parallel failed");
+        } else {
+            expect_success(state, plastica(args));
+        }
+        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        state.PauseTiming();
+        if (through_parallel) expect_success(state, plastica({"merge", dir.string()}));
+        state.ResumeTiming();
+    }
+    state.counters["runs_per_second"] = 1000.0 / wall;
+    state.counters["overhead_ms_per_run"] = 1e3 * (cores * wall / 1000.0 - mean_run_seconds(dir / "sweep.csv"));
+}
+BENCHMARK(process_sweep_1000)->ArgName("through_parallel")->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 } // namespace plastica::bench

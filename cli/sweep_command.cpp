@@ -152,7 +152,9 @@ int sweep_command(const Args& args) {
         ("jobs,j", po::value<int>()->default_value(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))), "runs at a time")
         ("emit", po::value<std::string>(), "'jobs': write jobs.txt and sweep.sbatch instead of running")
         ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100")
-        ("no-charts", "sweep.csv only, no charts");
+        ("no-charts", "sweep.csv only, no charts")
+        ("run-output", po::value<std::string>()->default_value("curves"),
+         "what each run writes: curves (curve.csv, run.json), series (and its VTU series) or pictures (and its frames, chart and animation)");
     po::positional_options_description positional;
     positional.add("scene", 1);
     po::variables_map vm;
@@ -163,7 +165,9 @@ int sweep_command(const Args& args) {
     std::string dir;
     SweepPlan plan;
     std::vector<double> at;
+    RunOutput output = RunOutput::curves;
     try {
+        output = parse_run_output(vm["run-output"].as<std::string>());
         const Model model = read_scene(scene);
         // Absolute: jobs.txt and the Slurm script may run from any directory.
         dir = fs::absolute(vm.count("output") ? fs::path(vm["output"].as<std::string>())
@@ -215,7 +219,7 @@ int sweep_command(const Args& args) {
             std::cerr << "plastica: --emit takes 'jobs'\n";
             return bad_input;
         }
-        write_jobs(dir, self(), scene, plan);
+        write_jobs(dir, self(), scene, plan, output);
         std::cout << dir << "/jobs.txt: " << plan.ids.size() << " runs. Run them with GNU Parallel:\n"
                   << "  parallel --joblog " << dir << "/joblog < " << dir << "/jobs.txt\n"
                   << "or as a Slurm array: sbatch " << dir << "/sweep.sbatch\n"
@@ -237,7 +241,7 @@ int sweep_command(const Args& args) {
                 ++skipped;
                 continue;
             }
-            const pid_t pid = launch(program, run_arguments(scene, dir, plan, r), fs::path(dir) / "logs" / (plan.ids[r] + ".txt"));
+            const pid_t pid = launch(program, run_arguments(scene, dir, plan, r, output), fs::path(dir) / "logs" / (plan.ids[r] + ".txt"));
             if (pid > 0) running[pid] = plan.ids[r];
         }
         if (running.empty()) break;

@@ -214,13 +214,23 @@ SweepPlan read_plan(const std::string& dir) {
     return plan;
 }
 
-std::vector<std::string> run_arguments(const std::string& scene, const std::string& dir, const SweepPlan& plan, std::size_t run) {
+RunOutput parse_run_output(const std::string& text) {
+    if (text == "curves") return RunOutput::curves;
+    if (text == "series") return RunOutput::series;
+    if (text == "pictures") return RunOutput::pictures;
+    throw StudyError("--run-output takes curves, series or pictures, got '" + text + "'");
+}
+
+std::vector<std::string> run_arguments(const std::string& scene, const std::string& dir, const SweepPlan& plan, std::size_t run,
+                                       RunOutput output) {
     std::vector<std::string> args{"run", scene};
     for (std::size_t k = 0; k < plan.keys.size(); ++k) {
         args.push_back("--set");
         args.push_back(plan.keys[k] + "=" + plan.values[run][k]);
     }
-    for (const char* a : {"--curves-only", "-q", "--force", "-o"}) args.push_back(a);
+    if (output == RunOutput::curves) args.push_back("--curves-only");
+    if (output == RunOutput::series) args.push_back("--no-render");
+    for (const char* a : {"-q", "--force", "-o"}) args.push_back(a);
     args.push_back((fs::path(dir) / "runs" / plan.ids[run]).string());
     return args;
 }
@@ -232,12 +242,13 @@ bool run_finished(const std::string& dir, const std::string& id) {
     return !j.is_discarded() && j.is_object() && j.value("status", "running") != "running";
 }
 
-void write_jobs(const std::string& dir, const std::string& program, const std::string& scene, const SweepPlan& plan) {
+void write_jobs(const std::string& dir, const std::string& program, const std::string& scene, const SweepPlan& plan,
+                RunOutput output) {
     fs::create_directories(fs::path(dir) / "logs");
     std::ofstream jobs(fs::path(dir) / "jobs.txt");
     for (std::size_t r = 0; r < plan.ids.size(); ++r) {
         jobs << quoted_for_shell(program);
-        for (const std::string& a : run_arguments(scene, dir, plan, r)) jobs << ' ' << quoted_for_shell(a);
+        for (const std::string& a : run_arguments(scene, dir, plan, r, output)) jobs << ' ' << quoted_for_shell(a);
         // Its messages where the in-process pool puts them, so merge can say why a run failed.
         jobs << " > " << quoted_for_shell((fs::absolute(dir) / "logs" / (plan.ids[r] + ".txt")).string()) << " 2>&1\n";
     }

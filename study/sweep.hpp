@@ -36,13 +36,21 @@ SweepPlan sample_plan(const std::vector<SampledKey>& keys, int runs, std::uint64
 void write_plan(const std::string& dir, const SweepPlan& plan);
 SweepPlan read_plan(const std::string& dir); // throws StudyError when there is none
 
-// The argument list of one run: run SCENE --set KEY=VALUE… --curves-only -q -o DIR/runs/<id>.
-std::vector<std::string> run_arguments(const std::string& scene, const std::string& dir, const SweepPlan& plan, std::size_t run);
+// What each run writes: curve.csv and run.json (the default), also its VTU series, or also
+// its pictures.
+enum class RunOutput { curves, series, pictures };
+RunOutput parse_run_output(const std::string& text); // throws StudyError naming the text
+
+// The argument list of one run: run SCENE --set KEY=VALUE… --curves-only -q -o DIR/runs/<id>
+// (--no-render for a series, neither for pictures).
+std::vector<std::string> run_arguments(const std::string& scene, const std::string& dir, const SweepPlan& plan, std::size_t run,
+                                       RunOutput output = RunOutput::curves);
 // Whether a run folder holds a finished run (run.json with a final status).
 bool run_finished(const std::string& dir, const std::string& id);
 
 // jobs.txt (one shell-quoted command line per run) and sweep.sbatch (a Slurm array over it).
-void write_jobs(const std::string& dir, const std::string& program, const std::string& scene, const SweepPlan& plan);
+void write_jobs(const std::string& dir, const std::string& program, const std::string& scene, const SweepPlan& plan,
+                RunOutput output = RunOutput::curves);
 
 struct SweepSummary {
     int runs = 0, completed = 0, stopped = 0, failed = 0, missing = 0;

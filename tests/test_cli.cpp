@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -470,4 +471,50 @@ TEST_CASE("A disk that fills mid-run stops it with exit 3: every output ends at 
         CHECK(report.str().find("\"steps\": " + std::to_string(std::max(rows_last_step, 0))) != std::string::npos);
         for (const auto& f : fs::recursive_directory_iterator(out)) CHECK(f.path().string().find(".tmp") == std::string::npos);
     }
+}
+
+TEST_CASE("The ring's fy × ky sweep gives the same rows in-process, through GNU Parallel and merged", "[cli][sweep]") {
+    const fs::path dir = scratch("sweep_grid");
+    const std::string base = "sweep " + model("ring_inelastic.toml") + " --vary 'material[steel].fy=30000,36518,43000'" +
+                             " --vary 'foundation[1].ky=600,1200,2400' --at 50,100 --no-charts -j 2 -o ";
+    REQUIRE(plastica(base + (dir / "pool").string()).code == 0);
+    REQUIRE(plastica(base + (dir / "jobs").string() + " --emit jobs").code == 0);
+    REQUIRE(std::system(("parallel --will-cite -j 2 < " + (dir / "jobs" / "jobs.txt").string() + " > /dev/null 2>&1").c_str()) == 0);
+    const Result merged = plastica("merge " + (dir / "jobs").string() + " --at 50,100");
+    CHECK_THAT(merged.output, Catch::Contains("9 runs, 9 completed, 0 stopped early, 0 failed, 0 missing"));
+    auto rows = [](const fs::path& csv) {
+        std::ifstream in(csv);
+        std::vector<std::string> lines;
+        // Each row up to its iterations: the last two columns (steps, seconds) hold the timing.
+        for (std::string l; std::getline(in, l);) lines.push_back(l.substr(0, l.rfind(',')));
+        return lines;
+    };
+    const std::vector<std::string> pool = rows(dir / "pool" / "sweep.csv"), jobs = rows(dir / "jobs" / "sweep.csv");
+    REQUIRE(pool.size() == 10u);
+    CHECK(pool == jobs);
+    // The variants differ: nine distinct peak loads (the column after the reason).
+    std::set<std::string> peaks;
+    for (std::size_t k = 1; k < pool.size(); ++k) {
+        const std::size_t at = pool[k].find("target displacement reached,");
+        REQUIRE(at != std::string::npos);
+        const std::string rest = pool[k].substr(at + 28);
+        peaks.insert(rest.substr(0, rest.find(',')));
+    }
+    CHECK(peaks.size() == 9u);
+}
+
+TEST_CASE("A sweep's runs write curves by default, their series or their pictures on request", "[cli][sweep]") {
+    const fs::path dir = scratch("sweep_output");
+    const std::string base = "sweep " + model("ring_elastic.toml") + " --vary analysis.target_displacement=10,20 --no-charts -o ";
+    REQUIRE(plastica(base + (dir / "curves").string()).code == 0);
+    CHECK(fs::exists(dir / "curves" / "runs" / "r0001" / "curve.csv"));
+    CHECK_FALSE(fs::exists(dir / "curves" / "runs" / "r0001" / "ring_elastic.pvd"));
+    REQUIRE(plastica(base + (dir / "series").string() + " --run-output series").code == 0);
+    CHECK(fs::exists(dir / "series" / "runs" / "r0002" / "ring_elastic.pvd"));
+    CHECK_FALSE(fs::exists(dir / "series" / "runs" / "r0002" / "chart.png"));
+    REQUIRE(plastica(base + (dir / "pictures").string() + " --run-output pictures").code == 0);
+    CHECK(fs::exists(dir / "pictures" / "runs" / "r0002" / "chart.png"));
+    const Result bad = plastica(base + (dir / "bad").string() + " --run-output frames");
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("--run-output takes curves, series or pictures, got 'frames'"));
 }

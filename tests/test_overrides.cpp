@@ -5,6 +5,9 @@
 
 #include "analysis/path_following.hpp"
 
+#include <toml++/toml.h>
+
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -84,4 +87,68 @@ TEST_CASE("A run with --set equals the run of the edited file to the last digit"
                                                     "foundation[1].ky=900.0", "analysis.target_displacement=40.0"}));
     REQUIRE(from_file.size() > 50u);
     CHECK(from_file == from_set);
+}
+
+namespace {
+
+// What a scene makes of its keys, bit for bit: the model's main values and two steps of its run.
+std::string fingerprint(Model m) {
+    std::ostringstream s;
+    s.precision(17);
+    s << m.name << '|' << m.title << '|' << m.nodes.size() << '|' << m.elements.size() << '|' << m.sections.size() << '|'
+      << m.supports.size() << '|' << m.loads.size() << '|' << m.springs.size() << '|' << m.stages.size() << '|'
+      << m.report.load_label << '|' << m.report.displacement_label << '|' << m.report.load_scale << '|'
+      << m.report.length_unit << m.report.force_unit << '|' << static_cast<int>(m.analysis.scheme) << '|'
+      << m.analysis.initial_increment << '|' << m.analysis.max_steps << '|' << m.analysis.residual_tolerance << '|'
+      << m.analysis.target_load_factor.value_or(-1) << '|' << m.analysis.target_displacement.value_or(-1) << '|';
+    for (const Node& n : m.nodes) s << n.x << ',' << n.y << ';';
+    for (const SectionSpec& sec : m.sections)
+        s << sec.name << ',' << sec.area << ',' << sec.inertia << ',' << sec.fibres.size() << ',' << (sec.steel ? sec.steel->fy : 0.0) << ';';
+    for (const FoundationSpring& f : m.springs) s << f.kx << ',' << f.ky << ',' << f.krot << ';';
+    m.analysis.max_steps = 2;
+    PathFollowing analysis(m);
+    analysis.run({[&](const StepResult& r) {
+        for (double u : r.displacement) s << u << ',';
+    }});
+    return s.str();
+}
+
+// Every leaf key of a TOML table as (path, value text), with list entries by 1-based index.
+void leaves(const toml::table& table, const std::string& prefix, std::vector<std::pair<std::string, std::string>>& out) {
+    for (auto&& [key, node] : table) {
+        const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+        if (const toml::table* t = node.as_table()) {
+            leaves(*t, path, out);
+        } else if (const toml::array* a = node.as_array(); a && a->is_array_of_tables()) {
+            for (std::size_t i = 0; i < a->size(); ++i) leaves(*(*a)[i].as_table(), path + "[" + std::to_string(i + 1) + "]", out);
+        } else {
+            std::ostringstream value;
+            node.visit([&](auto&& v) { value << v; }); // TOML text: strings quoted, arrays bracketed
+            out.emplace_back(path, value.str());
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("Every key of every shipped scene can be set by its path, and setting its own value changes nothing", "[scene][overrides]") {
+    namespace fs = std::filesystem;
+    int keys = 0, scenes = 0;
+    for (const char* folder : {"models", "models/gallery"}) {
+        for (const auto& entry : fs::directory_iterator(fs::path(PLASTICA_SOURCE_DIR) / folder)) {
+            if (entry.path().extension() != ".toml") continue;
+            const std::string file = entry.path().string();
+            const std::string plain = fingerprint(read_scene(file, {}));
+            std::vector<std::pair<std::string, std::string>> all;
+            leaves(toml::parse_file(file), "", all);
+            ++scenes;
+            for (const auto& [path, value] : all) {
+                CAPTURE(file, path, value);
+                CHECK(fingerprint(read_scene(file, {parse_override(path + "=" + value)})) == plain);
+                ++keys;
+            }
+        }
+    }
+    CHECK(scenes >= 15);
+    CHECK(keys > 400);
 }
