@@ -108,8 +108,9 @@ public:
         read_report(top);
         top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
                     "load", "distributed_load", "prescribed", "foundation", "analysis", "stage", "report"});
-        if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty())
-            throw SceneError(file_, 1, "load", "the scene has no [[load]], no [[distributed_load]] and no [[prescribed]] displacement");
+        if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty() && !model_.has_moving_base())
+            throw SceneError(file_, 1, "load",
+                             "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement and no moving base (base_motion)");
         return std::move(model_);
     }
 
@@ -634,6 +635,7 @@ private:
                     tributary[e.node_j] += L / 2.0;
                 }
             }
+            int base_index = 0;
             if (unilateral) {
                 BaseLine base;
                 double lowest = 1e300;
@@ -643,20 +645,22 @@ private:
                 const double nn = std::hypot(base.normal[0], base.normal[1]);
                 if (!(nn > 0.0)) r.fail("base_normal", "expected a non-zero vector");
                 base.normal = {base.normal[0] / nn, base.normal[1] / nn};
-                if (model_.base && (model_.base->point != base.point || model_.base->normal != base.normal))
-                    r.fail("base_point", "all unilateral foundations must share one base line");
-                model_.base = base;
+                // A platen: the base moves by λ·base_motion (the load factor drives it).
+                if (r.has("base_motion")) base.motion = r.point("base_motion");
+                // Foundations on the same line share it; another line is another base.
+                const auto same = std::find_if(model_.bases.begin(), model_.bases.end(), [&](const BaseLine& b) {
+                    return b.point == base.point && b.normal == base.normal && b.motion == base.motion;
+                });
+                base_index = static_cast<int>(same - model_.bases.begin());
+                if (same == model_.bases.end()) model_.bases.push_back(base);
                 std::string inside;
-                for (int n : nodes) {
-                    const double gap = (model_.nodes[n].x - base.point[0]) * base.normal[0] +
-                                       (model_.nodes[n].y - base.point[1]) * base.normal[1];
-                    if (gap < -1e-9 * size_scale_) inside += (inside.empty() ? "" : ", ") + describe_node(n);
-                }
+                for (int n : nodes)
+                    if (base.gap(model_.nodes[n].x, model_.nodes[n].y, 0.0) < -1e-9 * size_scale_)
+                        inside += (inside.empty() ? "" : ", ") + describe_node(n);
                 if (!inside.empty()) r.fail("base_point", "the structure already penetrates the base at " + inside);
             } else {
-                if (r.has("base_point") || r.has("base_normal"))
-                    r.fail(r.has("base_point") ? "base_point" : "base_normal",
-                           "a base line belongs to a unilateral foundation (kind = \"unilateral\")");
+                for (const char* key : {"base_point", "base_normal", "base_motion"})
+                    if (r.has(key)) r.fail(key, "a base line belongs to a unilateral foundation (kind = \"unilateral\")");
             }
             const std::vector<std::array<double, 2>> directions = tensionless ? bed_directions(r, nodes) : std::vector<std::array<double, 2>>{};
             for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -668,9 +672,11 @@ private:
                 s.unilateral = unilateral || tensionless;
                 s.anchored = tensionless;
                 if (tensionless) s.direction = directions[k];
+                s.base = base_index;
                 model_.springs.push_back(s);
             }
-            r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal", "direction"});
+            r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal",
+                      "base_motion", "direction"});
         }
     }
 
@@ -832,7 +838,11 @@ private:
         // Loads in more than one direction have no total an engineer would call the load:
         // then the load factor is reported, and labelled so.
         const bool parallel = model_.loads_parallel();
-        if (!parallel) {
+        if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty()) {
+            // Driven by platens alone: the load is the force they press with.
+            model_.report.measure = ReportSpec::Measure::platen;
+            model_.report.load_label = "platen force";
+        } else if (!parallel) {
             model_.report.measure = ReportSpec::Measure::factor;
             model_.report.load_label = "load factor";
         } else if (model_.uniform_pressure_only()) {
@@ -844,8 +854,12 @@ private:
             const std::string measure = r.choice("load", {"total", "factor"}, "total");
             if (measure == "total" && !parallel)
                 r.fail("load", "the loads are not parallel, so their total has no direction: report the load factor (load = \"factor\")");
-            model_.report.measure = measure == "total" ? ReportSpec::Measure::total : ReportSpec::Measure::factor;
-            if (measure == "factor") model_.report.load_label = "load factor";
+            if (measure == "factor") {
+                model_.report.measure = ReportSpec::Measure::factor;
+                model_.report.load_label = "load factor";
+            } else if (model_.report.measure != ReportSpec::Measure::platen) {
+                model_.report.measure = ReportSpec::Measure::total;
+            }
         }
         model_.report.load_scale = r.positive_or("load_scale", 1.0);
         model_.report.load_label = r.string_or("load_label", model_.report.load_label);

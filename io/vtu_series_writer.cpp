@@ -199,11 +199,18 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     }
     if (m.has_unilateral_base()) {
         XmlArray contact = real_array("contact_force", n, 3), gap = real_array("gap", n), state = integer_array("contact", n);
+        // A node may face more than one base (a ring between plates): its forces add up, its
+        // gap is to the nearest base, and it is in contact when any base holds it.
+        std::vector<bool> seen(n, false);
         for (const SpringResult& s : r.springs) {
             if (!s.unilateral) continue;
-            set3(contact, s.node, s.force[0], s.force[1], 0.0);
-            real(gap)[s.node] = s.gap;
-            integer(state)[s.node] = s.active ? 1 : 0;
+            double* f = &real(contact)[3 * static_cast<std::size_t>(s.node)];
+            f[0] += s.force[0];
+            f[1] += s.force[1];
+            double& g = real(gap)[s.node];
+            g = seen[s.node] ? std::min(g, s.gap) : s.gap;
+            seen[s.node] = true;
+            if (s.active) integer(state)[s.node] = 1;
         }
         pd.push_back(std::move(contact));
         pd.push_back(std::move(gap));
@@ -314,23 +321,27 @@ void VtuSeriesWriter::write_base() {
         poly.vertices.push_back(add_point(m.nodes[s.node].x, m.nodes[s.node].y));
         integer(kind).push_back(0);
     }
-    if (m.base) {
-        // The rigid line, long enough for a structure that spreads over it: twice the
-        // structure's extent on either side of its centre.
+    // Each rigid line, long enough for a structure that spreads over it: twice the structure's
+    // extent on either side of its centre. A platen's line is drawn where it is at λ = 0 and
+    // moves by λ·motion (cell array "motion"; λ is each step's load_factor).
+    XmlArray motion = real_array("motion", poly.vertices.size(), 3);
+    for (const BaseLine& base : m.bases) {
         double lo = 1e300, hi = -1e300;
-        const double tx = -m.base->normal[1], ty = m.base->normal[0];
+        const double tx = -base.normal[1], ty = base.normal[0];
         for (const Node& nd : m.nodes) {
-            const double t = (nd.x - m.base->point[0]) * tx + (nd.y - m.base->point[1]) * ty;
+            const double t = (nd.x - base.point[0]) * tx + (nd.y - base.point[1]) * ty;
             lo = std::min(lo, t);
             hi = std::max(hi, t);
         }
         const double mid = 0.5 * (lo + hi), half = std::max(hi - lo, 1e-12);
-        const std::int64_t a = add_point(m.base->point[0] + (mid - 2 * half) * tx, m.base->point[1] + (mid - 2 * half) * ty);
-        const std::int64_t b = add_point(m.base->point[0] + (mid + 2 * half) * tx, m.base->point[1] + (mid + 2 * half) * ty);
+        const std::int64_t a = add_point(base.point[0] + (mid - 2 * half) * tx, base.point[1] + (mid - 2 * half) * ty);
+        const std::int64_t b = add_point(base.point[0] + (mid + 2 * half) * tx, base.point[1] + (mid + 2 * half) * ty);
         poly.lines.push_back({a, b});
         integer(kind).push_back(1);
+        for (double v : {base.motion[0], base.motion[1], 0.0}) real(motion).push_back(v);
     }
     poly.cell_data.push_back(std::move(kind));
+    if (m.has_moving_base()) poly.cell_data.push_back(std::move(motion));
     write_file_atomically((fs::path(directory_) / "base.vtp").string(), poly_data_xml(poly, options_.compression));
     has_base_file_ = true;
 }

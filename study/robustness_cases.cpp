@@ -194,6 +194,15 @@ std::vector<StabilityCase> robustness_cases() {
                                     " against the load " + std::to_string(r.load);
                          return r.contact_length >= 4.0 ? "" : "contact length " + std::to_string(r.contact_length);
                      }});
+    cases.push_back({"ring crushed between two plates", "upper plate driven 120 down", embedded_scene("gallery/ring_between_plates"),
+                     done, [](const Steps& steps, const RunSummary&) -> std::string {
+                         // What the moving plate presses with, the fixed one carries.
+                         for (const StepResult& r : steps)
+                             if (std::abs(r.base_reaction - r.load) > 1e-6 * std::max(r.load, 1e-12))
+                                 return "step " + std::to_string(r.step) + ": plates " + std::to_string(r.base_reaction) +
+                                        " against " + std::to_string(r.load);
+                         return steps.back().contact_count >= 4 ? "" : "the contact never spread over the plates";
+                     }});
     cases.push_back({"Lee's frame, arc length", "through the limit and the snap-back", embedded_scene("gallery/lee_frame"),
                      done, [](const Steps& steps, const RunSummary&) -> std::string {
                          // The limit load 18.5 EI/L² (1.8659 for this 10 + 10 mesh), then the load

@@ -243,3 +243,26 @@ TEST_CASE("A tensionless bed follows the members' normals: a pipe in soil bears 
     CHECK(invert_bears);
     CHECK(sides_bear);
 }
+
+TEST_CASE("A ring between two plates, the upper one moving, is the headline ring while each plate touches one node", "[foundation][ring][contact]") {
+    // The moving plate's penalty spring at the top node carries what the headline ring's point
+    // load carries, so P against the top displacement is the same curve until the contact
+    // spreads over the upper plate (near δ = 50 of 100).
+    const Run headline = run_scene_file("models/ring_elastic.toml");
+    const Run plates = run_scene_file("models/gallery/ring_between_plates.toml");
+    REQUIRE(headline.summary.status == RunStatus::completed);
+    REQUIRE(plates.summary.status == RunStatus::completed);
+    auto load_at = [](const Run& r, double d) {
+        return value_at(r.steps, d, [](const StepResult& s) { return s.control_displacement; }, [](const StepResult& s) { return s.load; });
+    };
+    for (double d : {1.0, 5.0, 10.0, 20.0, 30.0, 40.0}) {
+        CAPTURE(d);
+        CHECK(load_at(plates, d) == Approx(load_at(headline, d)).epsilon(1e-6));
+    }
+    // Balance at every step: the fixed plate carries what the moving one presses with (the
+    // reported load is twice the half model's plate force; base_reaction sums both plates).
+    for (const StepResult& r : plates.steps) CHECK(r.base_reaction == Approx(r.load).margin(1e-9).epsilon(1e-6));
+    // The plate travel is the load factor; by its end the contact has spread to a second node on each plate.
+    CHECK(plates.steps.back().load_factor == Approx(120.0));
+    CHECK(plates.steps.back().contact_count >= 4); // two nodes on each plate
+}

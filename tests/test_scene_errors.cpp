@@ -128,6 +128,7 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
              return t.replace(t.find("I = 1.0"), 7, "I = 1.0\nplasticity = \"hinges\"");
          }(), "refined plastic hinges hold the moment at the fully plastic capacity", 14},
         {"bad ultimate strain", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nultimate_strain = 0.0001"), "expected 0 (never fails) or a strain above fy/E", 7},
+        {"a moving base on a bilateral foundation", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_motion = [0.0, -1.0]\n", "'foundation[1].base_motion': a base line belongs to a unilateral foundation", 29},
         {"bilateral foundation with a base", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.0]\n", "a base line belongs to a unilateral foundation", 29},
         {"fibres off the centroid", replaced("A = 1.0\nI = 1.0", "shape = \"fibres\"\nfibres = [[1.0, 0.5], [1.0, 1.5]]"), "measured from the centroid", 10},
         {"every DOF held", good.substr(0, good.find("[[support]]")) + "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [0.5, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[support]]\nat = [1.0, 0.0]\nfix = [\"ux\", \"rz\"]\n[[prescribed]]\nat = [1.0, 0.0]\ndof = \"uy\"\nvalue = -1.0\n[analysis]\nscheme = \"load_control\"\nincrement = 0.1\ntarget_load_factor = 1.0\n", "every degree of freedom is supported or prescribed", 29},

@@ -50,6 +50,15 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
     system_.report(u_, lambda_ * system_.load(), r);
+    if (model_.report.measure == ReportSpec::Measure::platen) {
+        r.load = 0.0;
+        for (std::size_t k = 0; k < r.springs.size(); ++k) {
+            const FoundationSpring& s = model_.springs[k];
+            if (s.unilateral && !s.anchored && model_.bases[static_cast<std::size_t>(s.base)].moves())
+                r.load += std::hypot(r.springs[k].force[0], r.springs[k].force[1]);
+        }
+        r.load *= model_.report.load_scale;
+    }
     return r;
 }
 
@@ -319,7 +328,7 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
 
 std::string PathFollowing::check_penetration() const {
     if (analysis_.allow_crossing) return {};
-    const std::string found = find_penetration(model_, u_);
+    const std::string found = find_penetration(model_, u_, lambda_);
     if (found.empty()) return found;
     return "step " + std::to_string(step_) + ": " + found;
 }

@@ -35,7 +35,7 @@ std::string where(const Point& p) {
 
 } // namespace
 
-std::string find_penetration(const Model& model, const Eigen::VectorXd& u) {
+std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor) {
     const std::size_t n = model.nodes.size();
     std::vector<Point> at(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -77,17 +77,15 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u) {
                        " crossed the symmetry line x = " + std::to_string(line) + " at " + where(at[i]);
     }
 
-    // A node the unilateral base does not hold may not pass below it.
-    if (model.base) {
+    // A node a base does not hold may not pass through it (where it started on its free side).
+    for (std::size_t b = 0; b < model.bases.size(); ++b) {
         std::vector<bool> held(n, false);
         for (const FoundationSpring& s : model.springs)
-            if (s.unilateral) held[s.node] = true;
-        const BaseLine& base = *model.base;
+            if (s.unilateral && !s.anchored && s.base == static_cast<int>(b)) held[s.node] = true;
+        const BaseLine& base = model.bases[b];
         for (std::size_t i = 0; i < n; ++i) {
-            const double gap = (at[i].x - base.point[0]) * base.normal[0] + (at[i].y - base.point[1]) * base.normal[1];
-            const double gap0 = (model.nodes[i].x - base.point[0]) * base.normal[0] +
-                                (model.nodes[i].y - base.point[1]) * base.normal[1];
-            if (!held[i] && gap0 >= 0.0 && gap < 0.0)
+            if (held[i] || base.gap(model.nodes[i].x, model.nodes[i].y, 0.0) < 0.0) continue;
+            if (base.gap(at[i].x, at[i].y, load_factor) < 0.0)
                 return "node " + std::to_string(i + 1) + " passed through the rigid base at " + where(at[i]) +
                        " (the base holds only the nodes its springs are on)";
         }

@@ -11,6 +11,6 @@
 namespace plastica {
 
 // Empty when the state is admissible; otherwise says what crossed what, and where.
-std::string find_penetration(const Model& model, const Eigen::VectorXd& u);
+std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor);
 
 } // namespace plastica

@@ -117,11 +117,15 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         load_ = fixed_load_;
         pressure_.add_forces(u, load_);
     }
-    foundation_.evaluate(u, freeze_active);
+    foundation_.evaluate(u, load_factor, freeze_active);
     for (std::size_t s = 0; s < foundation_.size(); ++s) {
         const int base = dofs_per_node * foundation_.spring(s).node;
         const Eigen::Vector3d fs = foundation_.internal_force(s);
         internal_.segment<3>(base) += fs;
+        // A platen moving with λ acts on the free DOFs as prescribed displacements do.
+        const Eigen::Vector3d rate = foundation_.load_rate(s);
+        for (int d = 0; d < dofs_per_node; ++d)
+            if (rate[d] != 0.0 && equation_[base + d] >= 0) coupling_[equation_[base + d]] += rate[d];
         assembler_.add(elements_.size() + s, foundation_.tangent(s));
     }
     return true;

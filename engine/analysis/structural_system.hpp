@@ -1,6 +1,7 @@
 // The discrete structure: elements and foundation springs over the model's DOFs. It evaluates
 // internal forces and the tangent on the free DOFs for a given full displacement vector, and
-// the coupling K_fp·ū that prescribed displacements exert on the free DOFs.
+// the coupling ∂f/∂λ that prescribed displacements (K_fp·ū) and moving platens exert on the
+// free DOFs.
 #pragma once
 
 #include "analysis/step_result.hpp"
@@ -33,7 +34,7 @@ public:
                   bool freeze_hinges = false, bool freeze_fibres = false);
 
     const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
-    const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū, free DOFs
+    const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū + platens, free DOFs
     // Reference loads at the evaluated state, per unit λ: the fixed ones plus follower pressure.
     const Eigen::VectorXd& load() const { return load_; }
     const SparseMatrix& tangent() const { return assembler_.matrix(); }

@@ -3,9 +3,11 @@
 namespace plastica {
 
 Foundation::Foundation(const Model& model)
-    : springs_(model.springs), nodes_(model.nodes), base_(model.base.value_or(BaseLine{})) {
-    const double n = std::hypot(base_.normal[0], base_.normal[1]);
-    base_.normal = {base_.normal[0] / n, base_.normal[1] / n};
+    : springs_(model.springs), nodes_(model.nodes), bases_(model.bases) {
+    for (BaseLine& b : bases_) {
+        const double n = std::hypot(b.normal[0], b.normal[1]);
+        b.normal = {b.normal[0] / n, b.normal[1] / n};
+    }
     states_.resize(springs_.size());
     for (std::size_t k = 0; k < springs_.size(); ++k) {
         states_[k].node = springs_[k].node;
@@ -13,7 +15,7 @@ Foundation::Foundation(const Model& model)
     }
 }
 
-void Foundation::evaluate(const Eigen::VectorXd& u, bool freeze_active) {
+void Foundation::evaluate(const Eigen::VectorXd& u, double load_factor, bool freeze_active) {
     changed_ = false;
     for (std::size_t k = 0; k < springs_.size(); ++k) {
         const FoundationSpring& sp = springs_[k];
@@ -28,8 +30,7 @@ void Foundation::evaluate(const Eigen::VectorXd& u, bool freeze_active) {
             st.gap = d.head<2>().dot(n); // the bed is where the node started
         } else {
             const Node& n0 = nodes_[sp.node];
-            const Eigen::Vector2d x(n0.x + d[0], n0.y + d[1]);
-            st.gap = (x - Eigen::Vector2d(base_.point[0], base_.point[1])).dot(n);
+            st.gap = bases_[static_cast<std::size_t>(sp.base)].gap(n0.x + d[0], n0.y + d[1], load_factor);
         }
         const bool touching = st.gap <= 0.0;
         if (!freeze_active) {
@@ -43,7 +44,20 @@ void Foundation::evaluate(const Eigen::VectorXd& u, bool freeze_active) {
 
 Eigen::Vector2d Foundation::normal_of(const FoundationSpring& spring) const {
     if (spring.anchored) return Eigen::Vector2d(spring.direction[0], spring.direction[1]);
-    return Eigen::Vector2d(base_.normal[0], base_.normal[1]);
+    const BaseLine& b = bases_[static_cast<std::size_t>(spring.base)];
+    return Eigen::Vector2d(b.normal[0], b.normal[1]);
+}
+
+Eigen::Vector3d Foundation::load_rate(std::size_t k) const {
+    const FoundationSpring& sp = springs_[k];
+    Eigen::Vector3d rate = Eigen::Vector3d::Zero();
+    if (!sp.unilateral || sp.anchored || !states_[k].active) return rate;
+    const BaseLine& b = bases_[static_cast<std::size_t>(sp.base)];
+    if (!b.moves()) return rate;
+    // Internal force k·g·n with ∂g/∂λ = −motion·n.
+    const Eigen::Vector2d n = normal_of(sp);
+    rate.head<2>() = -sp.ky * (b.motion[0] * n[0] + b.motion[1] * n[1]) * n;
+    return rate;
 }
 
 bool Foundation::active_set_consistent() const {

@@ -31,9 +31,10 @@ public:
     std::size_t size() const { return springs_.size(); }
     const FoundationSpring& spring(std::size_t k) const { return springs_[k]; }
 
-    // Evaluates every spring at the full displacement vector. With freeze_active the
-    // unilateral springs keep the active flags of the previous evaluation.
-    void evaluate(const Eigen::VectorXd& u, bool freeze_active);
+    // Evaluates every spring at the full displacement vector and load factor (which moves
+    // platens). With freeze_active the unilateral springs keep the active flags of the
+    // previous evaluation.
+    void evaluate(const Eigen::VectorXd& u, double load_factor, bool freeze_active);
     // Whether the active set used matches the geometry (it does unless frozen and stale).
     bool active_set_consistent() const;
     // Whether the last evaluation changed the active set compared with the one before.
@@ -43,6 +44,8 @@ public:
     // Internal force (3 entries) and tangent (3×3) of spring k at the last evaluation.
     Eigen::Vector3d internal_force(std::size_t k) const { return -states_[k].force; }
     Eigen::Matrix3d tangent(std::size_t k) const;
+    // ∂(internal force of spring k)/∂λ: nonzero where an active spring's base moves.
+    Eigen::Vector3d load_rate(std::size_t k) const;
 
     int active_contacts() const;
 
@@ -52,7 +55,7 @@ private:
 
     std::vector<FoundationSpring> springs_;
     std::vector<Node> nodes_;
-    BaseLine base_;
+    std::vector<BaseLine> bases_;
     std::vector<SpringState> states_;
     bool changed_ = false;
 };

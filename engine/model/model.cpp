@@ -25,6 +25,12 @@ int Model::integration_points() const {
     return most;
 }
 
+bool Model::has_moving_base() const {
+    for (const BaseLine& b : bases)
+        if (b.moves()) return true;
+    return false;
+}
+
 bool Model::has_unilateral_base() const {
     for (const auto& s : springs)
         if (s.unilateral) return true;

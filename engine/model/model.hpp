@@ -96,10 +96,18 @@ struct PrescribedDisplacement {
     double value = 0.0; // reference value, scaled by λ
 };
 
-// A straight rigid base: points x with (x - point)·normal < 0 penetrate it.
+// A straight rigid base: points x with (x − p)·normal < 0 penetrate it, where p = point + λ·motion
+// (a platen driven by the load factor; motion zero for a fixed base).
 struct BaseLine {
     std::array<double, 2> point{0.0, 0.0};
     std::array<double, 2> normal{0.0, 1.0};
+    std::array<double, 2> motion{0.0, 0.0};
+
+    bool moves() const { return motion[0] != 0.0 || motion[1] != 0.0; }
+    // The gap of a point at load factor λ.
+    double gap(double x, double y, double load_factor) const {
+        return (x - point[0] - load_factor * motion[0]) * normal[0] + (y - point[1] - load_factor * motion[1]) * normal[1];
+    }
 };
 
 // Discrete foundation spring at a node (seed eq. 5): Kb = diag(kx, ky, kθ). A unilateral
@@ -114,6 +122,7 @@ struct FoundationSpring {
     bool unilateral = false;
     bool anchored = false;                       // unilateral, against the node's initial position
     std::array<double, 2> direction{0.0, 1.0};   // anchored: the unit direction the bed pushes
+    int base = 0;                                // unilateral, not anchored: its base line in Model::bases
 };
 
 enum class Scheme { load_control, displacement_control, arc_length };
@@ -158,7 +167,8 @@ struct ReportSpec {
     // The reported load: λ times the total of the reference loads along their common direction
     // (forces all parallel, or moments only), or λ itself where they are not parallel (or the
     // scene asks for the factor); times load_scale (2 for a half model).
-    enum class Measure { total, factor } measure = Measure::total;
+    // platen: the force the moving bases press with (a scene driven by platens alone).
+    enum class Measure { total, factor, platen } measure = Measure::total;
     double load_scale = 1.0;
     std::string load_label = "load";                         // axis and title names in pictures
     std::string displacement_label = "control displacement";
@@ -179,7 +189,7 @@ struct Model {
     std::vector<ElementPressure> pressures;
     std::vector<PrescribedDisplacement> prescribed;
     std::vector<FoundationSpring> springs;
-    std::optional<BaseLine> base; // required when any spring is unilateral
+    std::vector<BaseLine> bases; // the rigid base lines of unilateral springs (FoundationSpring::base)
     AnalysisSpec analysis;
     std::vector<StageSpec> stages; // after the first ([analysis]), in order
     ReportSpec report;
@@ -189,6 +199,8 @@ struct Model {
     bool has_plasticity(Plasticity kind) const; // some element's section models it this way
     int integration_points() const;             // most points of a distributed-plasticity element
     bool has_unilateral_base() const;
+    // Whether a base moves with the load factor (a platen).
+    bool has_moving_base() const;
     // Whether the reference loads have one direction (parallel forces, or moments only).
     bool loads_parallel() const;
     // Whether the only load is one pressure, equal on every loaded element (it is then reported).

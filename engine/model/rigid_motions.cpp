@@ -69,7 +69,7 @@ std::string unrestrained_rigid_motion(const Model& model) {
             if (s.unilateral) {
                 // A compression-only spring holds along its normal (it is what rests the
                 // structure on its base).
-                const std::array<double, 2> d = s.anchored ? s.direction : model.base ? model.base->normal : s.direction;
+                const std::array<double, 2> d = s.anchored ? s.direction : model.bases.at(static_cast<std::size_t>(s.base)).normal;
                 hold(d[0] * mode(s.node, 0) + d[1] * mode(s.node, 1));
                 continue;
             }

@@ -1,5 +1,6 @@
 #include "flat_marks.hpp"
 #include "layers/layers.hpp"
+#include "result_series.hpp"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -25,7 +26,8 @@ public:
     }
 
     void attach(const ViewGeometry& view, const AddProp& add) override {
-        draw_lines(view);
+        view_ = view;
+        draw_lines(view, 0.0);
         vtkCellArray* verts = base_data_->GetVerts();
         verts->InitTraversal();
         vtkIdType n;
@@ -39,6 +41,13 @@ public:
         add(anchors_.prop(), true);
     }
 
+    // A platen is drawn where the step's load factor has moved it.
+    void show(vtkUnstructuredGrid* step) override {
+        if (!base_data_->GetCellData()->GetArray("motion")) return;
+        line_.clear();
+        draw_lines(view_, field_value(step, "load_factor"));
+    }
+
     std::vector<LegendEntry> legend() const override {
         if (!has_anchors_) return {};
         return {{LegendEntry::Mark::disc, colour::spring_anchor, 4.0, "spring anchor"}};
@@ -47,8 +56,9 @@ public:
 private:
     // Each base line as a bar with hatching on the far side from the structure, clipped to the
     // drawing so the legend column stays clear.
-    void draw_lines(const ViewGeometry& view) {
+    void draw_lines(const ViewGeometry& view, double load_factor) {
         vtkDataArray* kind = base_data_->GetCellData()->GetArray("kind");
+        vtkDataArray* motion = base_data_->GetCellData()->GetArray("motion");
         vtkCellArray* lines = base_data_->GetLines();
         lines->InitTraversal();
         vtkIdType n;
@@ -61,6 +71,11 @@ private:
             double a[3], b[3];
             base_data_->GetPoint(ids[0], a);
             base_data_->GetPoint(ids[n - 1], b);
+            if (motion)
+                for (int k = 0; k < 2; ++k) {
+                    a[k] += load_factor * motion->GetComponent(first_line + c, k);
+                    b[k] += load_factor * motion->GetComponent(first_line + c, k);
+                }
             const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
             const double tx = (b[0] - a[0]) / length, ty = (b[1] - a[1]) / length;
             double nx = -ty, ny = tx;
@@ -86,6 +101,7 @@ private:
     }
 
     const SeriesSummary& summary_;
+    ViewGeometry view_;
     vtkSmartPointer<vtkPolyData> base_data_;
     bool has_line_, has_anchors_;
     FlatMarks line_{-3.0}, anchors_{2.5};
