@@ -15,6 +15,7 @@ void add_render_options(po::options_description& options) {
         ("overlay-csv", po::value<std::vector<std::string>>()->composing(), "FILE:label, points (displacement, load per line) drawn over chart.png, e.g. digitised from a paper (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
         ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
+        ("show", po::value<std::string>(), "draw layers left out by default: reactions (the supports' forces and moments)")
         ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
         ("no-animation", "PNG frames only, no GIF");
 }
@@ -61,6 +62,7 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
         return items;
     };
     if (vm.count("hide")) options.hide = split(vm["hide"].as<std::string>());
+    if (vm.count("show")) options.show = split(vm["show"].as<std::string>());
     if (vm.count("shapes")) {
         try {
             for (const std::string& d : split(vm["shapes"].as<std::string>())) {

@@ -48,14 +48,14 @@ std::string number(double value) {
 }
 
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
-                             const std::vector<std::string>& hidden, double text_boost)
+                             const LayerChoice& layers, double text_boost)
     : summary_(summary), window_(width, height),
       chart_(with_unit(summary.displacement_label, summary.displacement_unit), with_unit(summary.load_label, summary.load_unit),
              text_boost * text_scale(width, height)) {
     const double s = text_boost * text_scale(width, height);
     const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
                                   static_cast<int>(std::lround((1.0 - band) * height))};
-    structure_ = std::make_unique<StructureView>(summary, make_layers(summary, first_step, base, hidden), structure_port, s);
+    structure_ = std::make_unique<StructureView>(summary, make_layers(summary, first_step, base, layers), structure_port, s);
 
     title_band_->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
     title_band_->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());

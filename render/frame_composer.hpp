@@ -4,6 +4,8 @@
 // frame only swaps the step's data in.
 #pragma once
 
+#include "layer_list.hpp"
+
 #include "load_chart.hpp"
 #include "offscreen_window.hpp"
 #include "reference_points.hpp"
@@ -25,10 +27,10 @@ namespace plastica::render {
 
 class FrameComposer {
 public:
-    // hidden: layers left out by name (layer_list.hpp); text_boost enlarges text and marks over
+    // layers: left out or drawn on request by name (layer_list.hpp); text_boost enlarges text and marks over
     // their size for the picture (small pictures that must stay legible: the contact sheet).
     FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
-                  const std::vector<std::string>& hidden = {}, double text_boost = 1.0);
+                  const LayerChoice& layers = {}, double text_boost = 1.0);
     ~FrameComposer();
 
     // Draws step `index` of the summary's curve, whose data is `step`.

@@ -14,8 +14,9 @@ namespace plastica::render {
 namespace {
 
 struct LayerKind {
-    const char* name; // for --hide
+    const char* name; // for --hide and --show
     std::function<std::unique_ptr<Layer>(const SeriesSummary&, vtkUnstructuredGrid*, vtkPolyData*)> make; // null: not needed
+    bool on_request = false; // drawn only when --show names it
 };
 
 // Drawing order, which is also the legend's order.
@@ -38,32 +39,52 @@ const std::vector<LayerKind>& kinds() {
         {"supports", [](const SeriesSummary& s, vtkUnstructuredGrid* first, vtkPolyData*) { return support_layer(s, first); }},
         {"loads",
          [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return s.max_load_force > 0 || s.max_load_moment > 0 ? load_layer(s) : nullptr;
+             return s.loads.max_force > 0 || s.loads.max_moment > 0 ? load_layer(s) : nullptr;
          }},
+        {"reactions",
+         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+             return s.reactions.max_force > 0 || s.reactions.max_moment > 0 ? reaction_layer(s) : nullptr;
+         },
+         true},
     };
     return all;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
 }
 
 } // namespace
 
 std::vector<std::string> hideable_layers() {
     std::vector<std::string> names;
-    for (const LayerKind& k : kinds()) names.push_back(k.name);
+    for (const LayerKind& k : kinds())
+        if (!k.on_request) names.push_back(k.name);
+    return names;
+}
+
+std::vector<std::string> on_request_layers() {
+    std::vector<std::string> names;
+    for (const LayerKind& k : kinds())
+        if (k.on_request) names.push_back(k.name);
     return names;
 }
 
 std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
-                                                vtkPolyData* base, const std::vector<std::string>& hidden) {
-    const std::vector<std::string> names = hideable_layers();
-    for (const std::string& h : hidden)
-        if (std::find(names.begin(), names.end(), h) == names.end()) {
-            std::string list;
-            for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-            throw RenderError("--hide takes " + list + " (got '" + h + "')");
-        }
+                                                vtkPolyData* base, const LayerChoice& choice) {
+    const std::vector<std::string> names = hideable_layers(), requested = on_request_layers();
+    for (const std::string& h : choice.hide)
+        if (std::find(names.begin(), names.end(), h) == names.end())
+            throw RenderError("--hide takes " + listed(names) + " (got '" + h + "')");
+    for (const std::string& s : choice.show)
+        if (std::find(requested.begin(), requested.end(), s) == requested.end())
+            throw RenderError("--show takes " + listed(requested) + " (got '" + s + "')");
+    auto named = [](const std::vector<std::string>& list, const char* name) { return std::find(list.begin(), list.end(), name) != list.end(); };
     std::vector<std::unique_ptr<Layer>> layers;
     for (const LayerKind& k : kinds()) {
-        if (std::find(hidden.begin(), hidden.end(), k.name) != hidden.end()) continue;
+        if (k.on_request ? !named(choice.show, k.name) : named(choice.hide, k.name)) continue;
         if (auto layer = k.make(summary, first_step, base)) layers.push_back(std::move(layer));
     }
     return layers;

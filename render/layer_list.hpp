@@ -1,6 +1,7 @@
 // The layers a series needs, in drawing order, each only when the scene has what it draws: no
 // hinge layer for an elastic scene, no contact arrows without contact, no supports or loads
-// where the series has none. `--hide` leaves out layers by name.
+// where the series has none. `--hide` leaves out layers by name; a few are drawn only on request
+// (`--show reactions`).
 #pragma once
 
 #include "layer.hpp"
@@ -15,11 +16,18 @@ class vtkUnstructuredGrid;
 
 namespace plastica::render {
 
-// Throws RenderError for a hidden name that is not a layer's.
+// Layers left out (--hide) and layers drawn on request (--show), by name.
+struct LayerChoice {
+    std::vector<std::string> hide, show;
+};
+
+// Throws RenderError for a name that is not a layer's (or, for show, not one drawn on request).
 std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
-                                                vtkPolyData* base, const std::vector<std::string>& hidden);
+                                                vtkPolyData* base, const LayerChoice& choice);
 
 // The names --hide takes, in drawing order.
 std::vector<std::string> hideable_layers();
+// The names --show takes: layers drawn only on request.
+std::vector<std::string> on_request_layers();
 
 } // namespace plastica::render

@@ -24,6 +24,7 @@ constexpr Rgb spring_anchor{90, 90, 90};
 constexpr Rgb contact_force{0, 140, 60};
 constexpr Rgb support{55, 65, 85};
 constexpr Rgb load{190, 20, 60};
+constexpr Rgb reaction{0, 150, 170};
 constexpr Rgb hinge_yielding_low{250, 215, 40};  // just past first yield
 constexpr Rgb hinge_yielding_high{245, 130, 0};  // close to the capacity
 constexpr Rgb hinge_plastic{150, 30, 170};        // at the capacity M_p(N)

@@ -79,18 +79,19 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     report.output = options.output.empty() ? series.folder : options.output;
     const fs::path out(report.output);
     const fs::path frames = out / "frames";
-    clear_frames(frames);
 
     vtkSmartPointer<vtkPolyData> base;
     if (!series.base_file.empty()) base = read_base(series.base_file);
     auto first = magnified(read_step(series.steps.front().file), summary.magnify);
-    FrameComposer composer(summary, first, base, options.width, options.height, options.hide);
+    FrameComposer composer(summary, first, base, options.width, options.height, {options.hide, options.show});
 
     const auto steps = chosen_steps(summary, options);
     // The sheet's tiles are drawn at their own size with text a quarter larger, so that a
     // tile's legend stays readable (a shrunken full frame's text is 6 pixels high).
     ContactSheet sheet(steps.size(), 3, 3, 1.0);
-    FrameComposer tiles(summary, first, base, options.width / 2, options.height / 2, options.hide, 1.25);
+    FrameComposer tiles(summary, first, base, options.width / 2, options.height / 2, {options.hide, options.show}, 1.25);
+    // Only now, with every option found good, do the earlier pictures go.
+    clear_frames(frames);
     const auto t0 = std::chrono::steady_clock::now();
     std::future<void> encoding;
     for (std::size_t k = 0; k < steps.size(); ++k) {

@@ -17,6 +17,7 @@ struct RenderOptions {
     int every = 1;                        // draw every k-th step (the first and last always)
     std::vector<int> steps;               // draw exactly these step numbers instead (snapshots)
     std::vector<std::string> hide;        // layers left out: initial, base, hinges, contact, supports, loads
+    std::vector<std::string> show;        // layers drawn on request: reactions
     std::vector<std::string> overlays;    // further series whose curves join chart.png
     std::vector<std::string> reference_points; // FILE:label CSVs of points that join chart.png
     std::vector<double> shapes;           // control displacements for shapes.png (empty: none)

@@ -189,19 +189,22 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                     s.any_contact = s.any_contact || f > 0.0;
                 }
         }
-        if (vtkDataArray* load = grid->GetPointData()->GetArray("applied_load")) {
-            for (vtkIdType i = 0; i < load->GetNumberOfTuples(); ++i) {
+        const std::pair<const char*, SeriesSummary::NodalArrows*> arrows[] = {{"applied_load", &s.loads}, {"reaction", &s.reactions}};
+        for (const auto& [name, stats] : arrows) {
+            vtkDataArray* a = grid->GetPointData()->GetArray(name);
+            if (!a) continue;
+            for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
                 const double whole = on_mirror_line(s, initial->GetTuple3(i)) ? 2.0 : 1.0;
-                const double fx = whole * load->GetComponent(i, 0), fy = whole * load->GetComponent(i, 1);
+                const double fx = whole * a->GetComponent(i, 0), fy = whole * a->GetComponent(i, 1);
                 const double f = std::hypot(fx, fy);
-                s.max_load_force = std::max(s.max_load_force, f);
-                s.max_load_moment = std::max(s.max_load_moment, whole * std::abs(load->GetComponent(i, 2)));
+                stats->max_force = std::max(stats->max_force, f);
+                stats->max_moment = std::max(stats->max_moment, whole * std::abs(a->GetComponent(i, 2)));
                 if (f <= 0.0) continue;
                 // An arrow points at its node, so its tail lies on the side the force comes from.
-                if (fx > 0.3 * f) s.load_sides |= 1;
-                if (fx < -0.3 * f) s.load_sides |= 2;
-                if (fy > 0.3 * f) s.load_sides |= 4;
-                if (fy < -0.3 * f) s.load_sides |= 8;
+                if (fx > 0.3 * f) stats->sides |= 1;
+                if (fx < -0.3 * f) stats->sides |= 2;
+                if (fy > 0.3 * f) stats->sides |= 4;
+                if (fy < -0.3 * f) stats->sides |= 8;
             }
         }
         for (const char* end : {"hinge_state_i", "hinge_state_j"}) {

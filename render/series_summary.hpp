@@ -44,11 +44,13 @@ struct SeriesSummary {
     bool mirrored = false;           // a half model drawn with its mirror image about x = mirror_x
     double mirror_x = 0.0;
     bool any_yielding = false, any_plastic = false, any_failed = false;
-    double max_load_force = 0.0;  // largest applied force at a node over the run
-    double max_load_moment = 0.0; // largest applied moment at a node over the run
-    // Sides of the structure the load arrows come from (their tails): bits 1 left, 2 right,
-    // 4 below, 8 above.
-    int load_sides = 0;
+    // Arrows at nodes (applied loads, support reactions): the largest force and moment at a
+    // node over the run, and which sides of their nodes the arrows' tails lie on.
+    struct NodalArrows {
+        double max_force = 0.0, max_moment = 0.0;
+        int sides = 0; // bits: 1 left, 2 right, 4 below, 8 above
+    };
+    NodalArrows loads, reactions;
     double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
     // Units the scene names (empty: none): of lengths and forces, and of the reported load and
     // displacement.

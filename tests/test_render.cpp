@@ -148,6 +148,20 @@ TEST_CASE("Supports and loads are drawn where the scene has them, and --hide lea
     hidden.hide = {"suports"};
     CHECK_THROWS_WITH(render_series(portal.string(), hidden),
                       Catch::Contains("--hide takes initial, base, hinges, contact, supports, loads (got 'suports')"));
+    // A refused option leaves the pictures drawn before.
+    CHECK(fs::exists(portal / "hidden" / "frames" / "frame_000200.png"));
+
+    // Reactions only on request: at the clamps, in the lower half, where no reaction colour is otherwise.
+    const auto reaction = [](Pixel p) { return is(p, colour::reaction); };
+    CHECK(count_pixels(read_png((portal / "pictures" / "frames" / "frame_000200.png").string()), reaction) == 0);
+    RenderOptions shown = small(portal / "reactions");
+    shown.show = {"reactions"};
+    render_series(portal.string(), shown);
+    frame = read_png((portal / "reactions" / "frames" / "frame_000200.png").string());
+    CHECK(count_pixels(frame, reaction, 0, structure_right, middle, 1) > 40);
+    CHECK(count_pixels(frame, reaction, 0, structure_right, band_bottom, middle) == 0);
+    shown.show = {"loads"};
+    CHECK_THROWS_WITH(render_series(portal.string(), shown), Catch::Contains("--show takes reactions (got 'loads')"));
 
     // The half ring's supports state symmetry on its mirror line: no symbols; its load at the
     // top is drawn, in the upper half of the view.

@@ -26,5 +26,6 @@ std::unique_ptr<Layer> support_layer(const SeriesSummary& summary, vtkUnstructur
 // Applied loads as arrows pointing at their nodes (moments as curved arrows), scaled to the
 // largest in the run.
 std::unique_ptr<Layer> load_layer(const SeriesSummary& summary);
+std::unique_ptr<Layer> reaction_layer(const SeriesSummary& summary); // on request
 
 } // namespace plastica::render

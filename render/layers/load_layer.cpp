@@ -19,15 +19,25 @@ std::string short_number(double v) {
     return text;
 }
 
+// Arrows at nodes from a point array of (fx, fy, mz): the applied loads, or the reactions of
+// the supports (forces on the structure, drawn the same way).
+struct ArrowKind {
+    const char* array;
+    Rgb colour;
+    const char* force_label;
+    const char* moment_label;
+};
+
 class LoadLayer final : public Layer {
 public:
-    explicit LoadLayer(const SeriesSummary& summary) : summary_(summary) {}
+    LoadLayer(const SeriesSummary& summary, const SeriesSummary::NodalArrows& stats, ArrowKind kind)
+        : summary_(summary), stats_(stats), kind_(kind) {}
 
     void reserve(double box[4], double size) override {
         // The longest arrow is 12 % of the structure's size; its tail lies beyond the node on
         // the side the force comes from.
         length_ = 0.12 * size;
-        const int sides = summary_.load_sides;
+        const int sides = stats_.sides;
         if (sides & 1) box[0] -= length_;
         if (sides & 2) box[1] += length_;
         if (sides & 4) box[2] -= length_;
@@ -41,7 +51,7 @@ public:
 
     void show(vtkUnstructuredGrid* step) override {
         arrows_.clear();
-        vtkDataArray* load = step->GetPointData()->GetArray("applied_load");
+        vtkDataArray* load = step->GetPointData()->GetArray(kind_.array);
         vtkDataArray* initial = step->GetPointData()->GetArray("initial_position");
         if (!load || !initial) return;
         for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
@@ -52,27 +62,27 @@ public:
             const double fx = whole * load->GetComponent(i, 0), fy = whole * load->GetComponent(i, 1),
                          m = whole * load->GetComponent(i, 2);
             const double f = std::hypot(fx, fy);
-            if (summary_.max_load_force > 0 && f > 1e-9 * summary_.max_load_force) {
+            if (stats_.max_force > 0 && f > 1e-9 * stats_.max_force) {
                 // The tip touches the ribbon's edge; short arrows keep a visible length.
-                const double length = std::max(length_ * f / summary_.max_load_force, view_.pixels(8));
+                const double length = std::max(length_ * f / stats_.max_force, view_.pixels(8));
                 const double tip[2] = {p[0] - 0.5 * view_.ribbon_width * fx / f, p[1] - 0.5 * view_.ribbon_width * fy / f};
                 const double tail[2] = {tip[0] - length * fx / f, tip[1] - length * fy / f};
-                arrows_.arrow(tail, tip, view_.pixels(3), colour::load);
+                arrows_.arrow(tail, tip, view_.pixels(3), kind_.colour);
             }
-            if (summary_.max_load_moment > 0 && std::abs(m) > 1e-9 * summary_.max_load_moment) moment_arrow(p, m > 0);
+            if (stats_.max_moment > 0 && std::abs(m) > 1e-9 * stats_.max_moment) moment_arrow(p, m > 0);
         }
     }
 
     std::vector<LegendEntry> legend() const override {
-        return {{LegendEntry::Mark::arrow, colour::load, 0.0, summary_.max_load_force > 0 ? "applied load" : "applied moment"}};
+        return {{LegendEntry::Mark::arrow, kind_.colour, 0.0, stats_.max_force > 0 ? kind_.force_label : kind_.moment_label}};
     }
 
     std::string note() const override {
         std::string text;
         const auto unit = [](const std::string& u) { return u.empty() ? std::string() : " " + u; };
-        if (summary_.max_load_force > 0) text = "longest: " + short_number(summary_.max_load_force) + unit(summary_.force_unit);
-        if (summary_.max_load_moment > 0)
-            text += (text.empty() ? "" : ", ") + std::string("moment ") + short_number(summary_.max_load_moment) +
+        if (stats_.max_force > 0) text = "longest: " + short_number(stats_.max_force) + unit(summary_.force_unit);
+        if (stats_.max_moment > 0)
+            text += (text.empty() ? "" : "\n") + std::string("moment ") + short_number(stats_.max_moment) +
                     unit(array_unit(summary_, "moment_i"));
         return text + "\n(largest in the run)";
     }
@@ -88,17 +98,19 @@ private:
         for (int k = 1; k <= pieces; ++k) {
             end = start + sense * sweep * k / pieces;
             const double next[2] = {p[0] + r * std::cos(end), p[1] + r * std::sin(end)};
-            arrows_.bar(previous, next, view_.pixels(3), colour::load);
+            arrows_.bar(previous, next, view_.pixels(3), kind_.colour);
             previous[0] = next[0], previous[1] = next[1];
         }
         // The head along the circle's tangent at its end.
         const double tangent[2] = {-sense * std::sin(end), sense * std::cos(end)};
         const double tail[2] = {previous[0] - view_.pixels(10) * tangent[0], previous[1] - view_.pixels(10) * tangent[1]};
         const double tip[2] = {previous[0] + view_.pixels(3) * tangent[0], previous[1] + view_.pixels(3) * tangent[1]};
-        arrows_.arrow(tail, tip, view_.pixels(3), colour::load);
+        arrows_.arrow(tail, tip, view_.pixels(3), kind_.colour);
     }
 
     const SeriesSummary& summary_;
+    const SeriesSummary::NodalArrows& stats_;
+    ArrowKind kind_;
     double length_ = 0.0;
     ViewGeometry view_;
     FlatMarks arrows_{3.5};
@@ -106,6 +118,12 @@ private:
 
 } // namespace
 
-std::unique_ptr<Layer> load_layer(const SeriesSummary& summary) { return std::make_unique<LoadLayer>(summary); }
+std::unique_ptr<Layer> load_layer(const SeriesSummary& summary) {
+    return std::make_unique<LoadLayer>(summary, summary.loads, ArrowKind{"applied_load", colour::load, "applied load", "applied moment"});
+}
+
+std::unique_ptr<Layer> reaction_layer(const SeriesSummary& summary) {
+    return std::make_unique<LoadLayer>(summary, summary.reactions, ArrowKind{"reaction", colour::reaction, "support reaction", "support moment"});
+}
 
 } // namespace plastica::render
