@@ -56,6 +56,9 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
       fixed_load_(fixed_load), load_(fixed_load),
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
+    for (const FoundationSpring& s : model.springs)
+        on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
+    driven_by_platens_ = model.loads.empty() && model.pressures.empty() && model.prescribed.empty() && model.has_moving_base();
     // One plastic hinge per node where exactly two inelastic elements meet: the first
     // element's end carries the capacity, the second's keeps only its pseudo-spring.
     std::vector<int> members(model.nodes.size(), 0);
@@ -211,6 +214,17 @@ void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& e
         const double dy = nodes_[e.node_j].y + u[3 * e.node_j + 1] - nodes_[e.node_i].y - u[3 * e.node_i + 1];
         out.contact_length += std::hypot(dx, dy);
     }
+}
+
+Eigen::VectorXd StructuralSystem::platen_force() const {
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(free_count_);
+    for (std::size_t s = 0; s < foundation_.size(); ++s) {
+        if (!on_moving_base_[s]) continue;
+        const int base = dofs_per_node * foundation_.spring(s).node;
+        for (int d = 0; d < dofs_per_node; ++d)
+            if (equation_[base + d] >= 0) force[equation_[base + d]] += foundation_.states()[s].force[d];
+    }
+    return force;
 }
 
 } // namespace plastica

@@ -40,6 +40,10 @@ public:
     const SparseMatrix& tangent() const { return assembler_.matrix(); }
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
+    // No load, no prescribed displacement: moving bases drive the structure.
+    bool driven_by_platens() const { return driven_by_platens_; }
+    // The forces the moving bases exert at the last evaluation (free DOFs).
+    Eigen::VectorXd platen_force() const;
     // Whether every element's hinge states (frozen or not) agree with the evaluated state.
     bool hinge_states_consistent() const;
 
@@ -69,6 +73,8 @@ private:
     Eigen::VectorXd internal_;
     Eigen::VectorXd coupling_;
     std::string non_finite_where_;
+    std::vector<bool> on_moving_base_; // per foundation spring
+    bool driven_by_platens_ = false;
 };
 
 } // namespace plastica

@@ -34,4 +34,9 @@ void StructureProblem::move(const Eigen::VectorXd& dx, double dlambda) {
     for (int dof : prescribed_) u_[dof] = lambda_ * ubar_[dof];
 }
 
+double StructureProblem::force_scale(double level) const {
+    if (!system_.driven_by_platens()) return NewtonProblem::force_scale(level);
+    return system_.platen_force().norm();
+}
+
 } // namespace plastica

@@ -51,7 +51,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         const double level = settings.reference_level > 0.0
                                  ? settings.reference_level
                                  : std::max(std::abs(problem.load_factor()), std::abs(result.load_change));
-        const double relative = residual.norm() / std::max(level * load.norm(), 1e-300);
+        const double relative = residual.norm() / std::max(problem.force_scale(level), 1e-300);
         if (!std::isfinite(relative)) {
             result.failure = NewtonFailure::non_finite;
             return result;

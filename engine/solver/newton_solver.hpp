@@ -29,6 +29,9 @@ public:
     virtual void move(const Eigen::VectorXd& dx, double dlambda) = 0;
     virtual double load_factor() const = 0;
     virtual double state_norm() const = 0; // ‖x‖, for the round-off floor of a correction
+    // The force the residual is measured against, given the load level: the reference load at
+    // that level, unless the problem knows a truer scale (the force a platen presses with).
+    virtual double force_scale(double level) const { return level * load_direction().norm(); }
 };
 
 // Fixes the load change of each iteration; NaN when no state satisfies the constraint.
