@@ -25,10 +25,13 @@ endif
 run: build
 	$(RUN_FIRST) $(BUILD)/cli/plastica run $(SCENE) $(RUN_ARGS)
 
+# The report test opens pages in a real browser: headless Chromium (Debian's chromium).
 test: build
+	@./scripts/install-deps.sh chromium
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 test-sanitize: deps
+	@./scripts/install-deps.sh chromium
 	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPLASTICA_SANITIZE=ON $(CMAKE_ARGS)
 	cmake --build build-sanitize -j $(JOBS)
 	cd build-sanitize && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \

@@ -19,5 +19,6 @@ int study_command(const Args& args);
 int stability_command(const Args& args);
 int sweep_command(const Args& args);
 int merge_command(const Args& args);
+int report_command(const Args& args);
 
 } // namespace plastica::cli

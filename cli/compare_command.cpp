@@ -3,13 +3,19 @@
 #include "commands.hpp"
 #include "options.hpp"
 
+#include "atomic_file.hpp"
 #include "image_compare.hpp"
 #include "render_error.hpp"
+#include "report_page.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace plastica::cli {
+
+namespace fs = std::filesystem;
 
 int compare_command(const Args& args) {
     render::CompareOptions defaults;
@@ -20,17 +26,20 @@ int compare_command(const Args& args) {
         ("threshold", po::value<int>()->default_value(defaults.threshold), "per-channel difference (0-255) below which pixels count as equal")
         ("max-fraction", po::value<double>()->default_value(defaults.max_fraction), "share of differing pixels an image may have")
         ("diff", po::value<std::string>(), "folder for <name>_diff.png of the images that fail")
+        ("report", po::value<std::string>(), "an HTML page with every failing picture beside its reference and its difference (diff images in --diff, or beside the page)")
         ("quiet,q", "print failures only");
     po::positional_options_description positional;
     positional.add("actual", 1).add("reference", 1);
     po::variables_map vm;
-    if (auto code = parse_options(args, "plastica compare ACTUAL REFERENCE [--threshold T] [--max-fraction F] [--diff DIR]",
+    if (auto code = parse_options(args, "plastica compare ACTUAL REFERENCE [--threshold T] [--max-fraction F] [--diff DIR] [--report FILE]",
                                   options, positional, vm))
         return *code;
     render::CompareOptions o;
     o.threshold = vm["threshold"].as<int>();
     o.max_fraction = vm["max-fraction"].as<double>();
     if (vm.count("diff")) o.diff_folder = vm["diff"].as<std::string>();
+    if (vm.count("report") && o.diff_folder.empty())
+        o.diff_folder = (fs::path(vm["report"].as<std::string>()).parent_path() / "diff").string();
     std::vector<render::ImageVerdict> verdicts;
     try {
         verdicts = render::compare_pictures(vm["actual"].as<std::string>(), vm["reference"].as<std::string>(), o);
@@ -50,9 +59,33 @@ int compare_command(const Args& args) {
             std::snprintf(line, sizeof line, "FAIL %-40s %s", v.name.c_str(), v.problem.c_str());
         std::cout << line << "\n";
     }
-    std::cout << (failed ? std::to_string(failed) + " of " + std::to_string(verdicts.size()) + " images differ"
-                         : "all " + std::to_string(verdicts.size()) + " images match")
-              << " (threshold " << o.threshold << ", max fraction " << o.max_fraction << ")\n";
+    std::ostringstream summary;
+    summary << (failed ? std::to_string(failed) + " of " + std::to_string(verdicts.size()) + " images differ"
+                       : "all " + std::to_string(verdicts.size()) + " images match")
+            << " (threshold " << o.threshold << ", max fraction " << o.max_fraction << ")";
+    std::cout << summary.str() << "\n";
+    if (vm.count("report")) {
+        const fs::path actual(vm["actual"].as<std::string>()), reference(vm["reference"].as<std::string>());
+        const bool folders = fs::is_directory(actual);
+        std::vector<FailedPicture> pictures;
+        for (const render::ImageVerdict& v : verdicts) {
+            if (v.passed) continue;
+            char why[160];
+            std::snprintf(why, sizeof why, "%.3f %% of the pixels differ (rms %.2f)", 100.0 * v.differing_fraction, v.rms);
+            const fs::path name(v.name);
+            pictures.push_back({v.name, v.problem.empty() ? why : v.problem, (folders ? actual / name : actual).string(),
+                                (folders ? reference / name : reference).string(),
+                                (fs::path(o.diff_folder) / (name.parent_path() / (name.stem().string() + "_diff.png"))).string()});
+        }
+        try {
+            write_file_atomically(vm["report"].as<std::string>(),
+                                  comparison_page("Pictures against their references", summary.str(), pictures));
+        } catch (const std::exception& e) {
+            std::cerr << "plastica: " << e.what() << "\n";
+            return bad_input;
+        }
+        std::cout << "-> " << vm["report"].as<std::string>() << "\n";
+    }
     return failed ? check_failed : ok;
 }
 

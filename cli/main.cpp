@@ -21,6 +21,7 @@ Commands:
   section SCENE    moment-curvature and N-M capacity curves of a scene's sections
   sweep SCENE      many runs of a scene with keys varied (grid or Monte Carlo); sweep.csv
   merge DIR        sweep.csv from the runs a sweep folder holds (after GNU Parallel or Slurm)
+  report OUT_DIR   one self-contained HTML page of a result folder (CI artifacts)
 
 Run 'plastica COMMAND --help' for the options of a command.
 Exit codes: 0 success, 1 comparison failed, 2 bad input, 3 analysis stopped early,
@@ -39,7 +40,7 @@ int main(int argc, char** argv) {
     mallopt(M_TOP_PAD, 64 << 20);
     // Commands that draw are compiled into plastica-draw only; plastica hands them over.
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"stability", stability_command},
+        {"run", run_command}, {"stability", stability_command}, {"report", report_command},
 #ifdef PLASTICA_DRAWING
         {"render", render_command}, {"compare", compare_command}, {"study", study_command},
         {"section", section_command}, {"sweep", sweep_command}, {"merge", merge_command},

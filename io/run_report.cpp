@@ -16,7 +16,8 @@ using Json = nlohmann::ordered_json;
 // What ran: the program, the scene and its size.
 Json header(const Model& model, const std::string& scene_file) {
     return {{"program", "plastica"},      {"version", PLASTICA_VERSION},
-            {"scene", model.name},        {"scene_file", scene_file},
+            {"scene", model.name},        {"title", model.title}, {"scene_file", scene_file},
+            {"load_label", model.report.load_label}, {"displacement_label", model.report.displacement_label},
             {"nodes", model.nodes.size()}, {"elements", model.elements.size()},
             {"springs", model.springs.size()}, {"inelastic", model.inelastic()}};
 }

@@ -518,3 +518,60 @@ TEST_CASE("A sweep's runs write curves by default, their series or their picture
     CHECK(bad.code == 2);
     CHECK_THAT(bad.output, Catch::Contains("--run-output takes curves, series or pictures, got 'frames'"));
 }
+
+namespace {
+
+// The page as a real browser has it after loading: headless Chromium's DOM (scripts run).
+std::string browser_dom(const fs::path& page) {
+    const fs::path dom = page.string() + ".dom";
+    const std::string cmd = "timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom 'file://" + fs::absolute(page).string() +
+                            "' > '" + dom.string() + "' 2>/dev/null";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    std::ifstream in(dom);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+TEST_CASE("plastica report writes one page a browser shows whole; compare --report shows each failing picture", "[cli][report]") {
+    const fs::path out = scratch("report");
+    REQUIRE(plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --steps 0,100,200 -q").code == 0);
+    const Result r = plastica("report " + out.string());
+    REQUIRE(r.code == 0);
+    const fs::path page = out / "report.html";
+    REQUIRE(fs::exists(page));
+    // Chart, contact sheet, animation and three key frames, all embedded: the page stands alone.
+    const fs::path moved = scratch("report_page") / "page.html";
+    fs::create_directories(moved.parent_path());
+    fs::copy_file(page, moved);
+    const std::string dom = browser_dom(moved);
+    CHECK_THAT(dom, Catch::Contains("6 of 6 images loaded"));
+    CHECK_THAT(dom, Catch::Contains("Elastic ring on a unilateral base"));
+    CHECK_THAT(dom, Catch::Contains("completed: target displacement reached"));
+    CHECK_THAT(dom, Catch::Contains("Newton iterations"));
+    CHECK_THAT(dom, Catch::Contains("peak P (at top displacement)"));
+    // Drawn to pixels by the same browser.
+    const fs::path shot = moved.parent_path() / "page.png";
+    REQUIRE(std::system(("timeout 120 chromium --headless --no-sandbox --disable-gpu --window-size=1280,2000 --screenshot='" +
+                         shot.string() + "' 'file://" + moved.string() + "' > /dev/null 2>&1").c_str()) == 0);
+    CHECK(fs::file_size(shot) > 50000);
+
+    // A comparison with one picture changed: that one beside its reference and its difference.
+    const fs::path stored = scratch("report_stored");
+    fs::copy(out / "frames", stored);
+    fs::copy_file(out / "frames" / "frame_000200.png", stored / "frame_000100.png", fs::copy_options::overwrite_existing);
+    const fs::path comparison = scratch("report_compare") / "compare.html";
+    fs::create_directories(comparison.parent_path());
+    const Result c = plastica("compare " + (out / "frames").string() + " " + stored.string() + " --report " + comparison.string());
+    CHECK(c.code == 1);
+    const std::string compared = browser_dom(comparison);
+    CHECK_THAT(compared, Catch::Contains("1 of 3 images differ"));
+    CHECK_THAT(compared, Catch::Contains("frame_000100.png"));
+    CHECK_THAT(compared, Catch::Contains("3 of 3 images loaded"));
+
+    const Result bad = plastica("report " + scratch("report_nothing").string());
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("holds no run.json"));
+}
