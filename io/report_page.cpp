@@ -1,5 +1,7 @@
 #include "report_page.hpp"
 
+#include "xml_text.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -13,19 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string escaped(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string base64(const std::string& bytes) {
     static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -59,8 +48,8 @@ std::string file_bytes(const fs::path& path) {
 // A picture embedded whole, with its caption.
 std::string figure(const fs::path& picture, const std::string& caption) {
     const std::string type = picture.extension() == ".gif" ? "image/gif" : "image/png";
-    return "<figure><img alt=\"" + escaped(caption) + "\" src=\"data:" + type + ";base64," + base64(file_bytes(picture)) +
-           "\"><figcaption>" + escaped(caption) + "</figcaption></figure>\n";
+    return "<figure><img alt=\"" + xml_escaped(caption) + "\" src=\"data:" + type + ";base64," + base64(file_bytes(picture)) +
+           "\"><figcaption>" + xml_escaped(caption) + "</figcaption></figure>\n";
 }
 
 const char* style = R"(<style>
@@ -85,7 +74,7 @@ window.addEventListener('load', function () {
 )";
 
 std::string page(const std::string& title, const std::string& body) {
-    return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escaped(title) + "</title>\n" + style +
+    return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + xml_escaped(title) + "</title>\n" + style +
            "</head><body>\n" + body + loaded_script + "</body></html>\n";
 }
 
@@ -108,11 +97,11 @@ std::string run_page(const std::string& folder) {
         throw ReportError(run_json.string() + " is not a run.json of plastica");
     const std::string scene = run.value("scene", "scene"), title = run.value("title", "");
     const std::string status = run.value("status", "unknown");
-    std::string body = "<h1>" + escaped(title.empty() ? scene : title) + "</h1>\n<p>scene <b>" + escaped(scene) + "</b> from " +
-                       escaped(run.value("scene_file", "")) + ", " + number(run.value("nodes", 0)) + " nodes, " +
+    std::string body = "<h1>" + xml_escaped(title.empty() ? scene : title) + "</h1>\n<p>scene <b>" + xml_escaped(scene) + "</b> from " +
+                       xml_escaped(run.value("scene_file", "")) + ", " + number(run.value("nodes", 0)) + " nodes, " +
                        number(run.value("elements", 0)) + " elements</p>\n";
-    body += "<p class=\"status " + std::string(status == "completed" ? "completed" : "stopped") + "\">" + escaped(status) + ": " +
-            escaped(run.value("reason", "")) + "</p>\n";
+    body += "<p class=\"status " + std::string(status == "completed" ? "completed" : "stopped") + "\">" + xml_escaped(status) + ": " +
+            xml_escaped(run.value("reason", "")) + "</p>\n";
     // The run's figures.
     const std::string load = run.value("load_label", "load"), displacement = run.value("displacement_label", "displacement");
     std::vector<std::pair<std::string, std::string>> rows{{"steps", number(run.value("steps", 0))},
@@ -132,7 +121,7 @@ std::string run_page(const std::string& folder) {
     if (run.contains("seconds"))
         for (const auto& [stage, seconds] : run["seconds"].items()) rows.push_back({"seconds: " + stage, number(seconds)});
     body += "<table>\n";
-    for (const auto& [name, value] : rows) body += "<tr><th>" + escaped(name) + "</th><td>" + escaped(value) + "</td></tr>\n";
+    for (const auto& [name, value] : rows) body += "<tr><th>" + xml_escaped(name) + "</th><td>" + xml_escaped(value) + "</td></tr>\n";
     body += "</table>\n";
     // The pictures the folder holds.
     std::string pictures;
@@ -164,10 +153,10 @@ std::string run_page(const std::string& folder) {
 }
 
 std::string comparison_page(const std::string& title, const std::string& summary, const std::vector<FailedPicture>& failed) {
-    std::string body = "<h1>" + escaped(title) + "</h1>\n<p class=\"status " + (failed.empty() ? "completed" : "stopped") + "\">" +
-                       escaped(summary) + "</p>\n";
+    std::string body = "<h1>" + xml_escaped(title) + "</h1>\n<p class=\"status " + (failed.empty() ? "completed" : "stopped") + "\">" +
+                       xml_escaped(summary) + "</p>\n";
     for (const FailedPicture& f : failed) {
-        body += "<h2>" + escaped(f.name) + "</h2>\n<p>" + escaped(f.why) + "</p>\n<div class=\"row\">\n";
+        body += "<h2>" + xml_escaped(f.name) + "</h2>\n<p>" + xml_escaped(f.why) + "</p>\n<div class=\"row\">\n";
         for (const auto& [path, caption] : {std::pair{f.actual, "rendered now"}, std::pair{f.reference, "stored reference"},
                                             std::pair{f.diff, "difference (red: differing pixels)"}})
             body += !path.empty() && fs::exists(path) ? figure(path, caption) : "<figure><figcaption>" + std::string(caption) + ": none</figcaption></figure>\n";

@@ -1,5 +1,7 @@
 #include "vtk_xml_format.hpp"
 
+#include "xml_text.hpp"
+
 #include <lz4.h>
 #include <zlib.h>
 
@@ -71,20 +73,6 @@ private:
     std::string block_;
 };
 
-// XML attribute text: names come from the result schema and scene names, but say it safely.
-std::string escaped(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
 struct Writer {
     std::string xml;
@@ -93,7 +81,7 @@ struct Writer {
     explicit Writer(Compression c) : appended(c) { xml.reserve(8192); }
 
     void data_array(const XmlArray& array, const char* indent, bool tuples_attribute) {
-        const std::string name = escaped(array.name);
+        const std::string name = xml_escaped(array.name);
         std::string type;
         std::size_t offset = 0;
         if (const auto* text = std::get_if<std::vector<std::string>>(&array.values)) {
@@ -121,7 +109,7 @@ struct Writer {
 
     void attribute_data(const std::vector<XmlArray>& arrays, const char* tag, const std::string& vectors) {
         xml += std::string("      <") + tag;
-        if (!vectors.empty()) xml += " Vectors=\"" + escaped(vectors) + "\"";
+        if (!vectors.empty()) xml += " Vectors=\"" + xml_escaped(vectors) + "\"";
         xml += ">\n";
         for (const XmlArray& a : arrays) data_array(a, "        ", false);
         xml += std::string("      </") + tag + ">\n";
