@@ -1,4 +1,5 @@
 #include "load_chart.hpp"
+#include "text_and_mirror.hpp"
 
 #include <vtkAxis.h>
 #include <vtkBrush.h>
@@ -39,11 +40,10 @@ void fill(vtkTable* table, const std::vector<double>& x, const std::vector<doubl
 
 void style_axis(vtkAxis* axis, const std::string& title, double s) {
     axis->SetTitle(title);
-    axis->GetTitleProperties()->SetFontFamilyToArial();
+    use_text_font(axis->GetTitleProperties(), true);
     axis->GetTitleProperties()->SetFontSize(static_cast<int>(std::lround(15 * s)));
-    axis->GetTitleProperties()->SetBold(true);
     axis->GetTitleProperties()->SetColor(0.1, 0.1, 0.1);
-    axis->GetLabelProperties()->SetFontFamilyToArial();
+    use_text_font(axis->GetLabelProperties());
     axis->GetLabelProperties()->SetFontSize(static_cast<int>(std::lround(13 * s)));
     axis->GetLabelProperties()->SetColor(0.1, 0.1, 0.1);
     axis->GetGridPen()->SetColor(225, 225, 225);
@@ -59,7 +59,7 @@ LoadChart::LoadChart(const std::string& x_title, const std::string& y_title, dou
     chart_->GetBackgroundBrush()->SetColor(255, 255, 255, 255);
     chart_->SetShowLegend(false);
     vtkChartLegend* legend = chart_->GetLegend();
-    legend->GetLabelProperties()->SetFontFamilyToArial();
+    use_text_font(legend->GetLabelProperties());
     legend->GetLabelProperties()->SetFontSize(static_cast<int>(std::lround(13 * text_scale)));
     legend->SetHorizontalAlignment(vtkChartLegend::LEFT);
     legend->SetVerticalAlignment(vtkChartLegend::TOP);

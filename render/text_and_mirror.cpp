@@ -6,14 +6,29 @@
 #include <vtkTransform.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace plastica::render {
 
+void use_text_font(vtkTextProperty* p, bool bold) {
+    // VTK's built-in Arial has Latin letters only (σ, θ, δ vanish); DejaVu Sans (Debian's
+    // fonts-dejavu-core) has Greek and the mathematical signs engineers write in labels.
+    static const char* regular = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    static const char* heavy = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
+    static const bool available = std::filesystem::exists(regular) && std::filesystem::exists(heavy);
+    p->SetBold(bold);
+    if (!available) {
+        p->SetFontFamilyToArial();
+        return;
+    }
+    p->SetFontFamily(VTK_FONT_FILE);
+    p->SetFontFile(bold ? heavy : regular);
+}
+
 void style_text(vtkTextProperty* p, double size, bool bold) {
-    p->SetFontFamilyToArial();
+    use_text_font(p, bold);
     p->SetFontSize(static_cast<int>(std::lround(size)));
     p->SetColor(colour::text.red(), colour::text.green(), colour::text.blue());
-    p->SetBold(bold);
     p->SetShadow(false);
 }
 

@@ -10,6 +10,9 @@ class vtkTextProperty;
 namespace plastica::render {
 
 void style_text(vtkTextProperty* p, double size, bool bold = false);
+// The font of every text: DejaVu Sans where Debian has it installed (Greek letters, signs),
+// else VTK's Arial.
+void use_text_font(vtkTextProperty* p, bool bold = false);
 
 // A copy of the actor drawn reflected about the line x = mirror_x (x → 2·mirror_x − x).
 vtkSmartPointer<vtkActor> mirrored(vtkActor* actor, double mirror_x);
