@@ -63,30 +63,26 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
     };
     if (vm.count("hide")) options.hide = split(vm["hide"].as<std::string>());
     if (vm.count("show")) options.show = split(vm["show"].as<std::string>());
-    if (vm.count("shapes")) {
+    // A comma-separated list of numbers, each read whole by `convert` (std::stod, std::stoi).
+    auto numbers = [&](const char* key, auto convert, auto& out, const char* what) {
+        if (!vm.count(key)) return true;
         try {
-            for (const std::string& d : split(vm["shapes"].as<std::string>())) {
+            for (const std::string& item : split(vm[key].as<std::string>())) {
                 std::size_t used = 0;
-                options.shapes.push_back(std::stod(d, &used));
-                if (used != d.size()) throw std::invalid_argument(d);
+                out.push_back(convert(item, &used));
+                if (used != item.size()) throw std::invalid_argument(item);
             }
         } catch (const std::exception&) {
-            std::cerr << "plastica: --shapes takes displacements separated by commas, e.g. 25,50,75,100\n";
-            return bad_input;
+            std::cerr << "plastica: --" << key << " takes " << what << "\n";
+            return false;
         }
-    }
-    if (vm.count("steps")) {
-        try {
-            for (const std::string& s : split(vm["steps"].as<std::string>())) {
-                std::size_t used = 0;
-                options.steps.push_back(std::stoi(s, &used));
-                if (used != s.size()) throw std::invalid_argument(s);
-            }
-        } catch (const std::exception&) {
-            std::cerr << "plastica: --steps takes step numbers separated by commas, e.g. 0,104,200\n";
-            return bad_input;
-        }
-    }
+        return true;
+    };
+    const auto real = [](const std::string& s, std::size_t* used) { return std::stod(s, used); };
+    const auto whole = [](const std::string& s, std::size_t* used) { return std::stoi(s, used); };
+    if (!numbers("shapes", real, options.shapes, "displacements separated by commas, e.g. 25,50,75,100") ||
+        !numbers("steps", whole, options.steps, "step numbers separated by commas, e.g. 0,104,200"))
+        return bad_input;
     return std::nullopt;
 }
 

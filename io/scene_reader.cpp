@@ -108,7 +108,7 @@ public:
         read_report(top);
         top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
                     "load", "distributed_load", "prescribed", "foundation", "analysis", "stage", "report"});
-        if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty() && !model_.has_moving_base())
+        if (!model_.loaded() && !model_.has_moving_base())
             throw SceneError(file_, 1, "load",
                              "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement and no moving base (base_motion)");
         return std::move(model_);
@@ -838,7 +838,7 @@ private:
         // Loads in more than one direction have no total an engineer would call the load:
         // then the load factor is reported, and labelled so.
         const bool parallel = model_.loads_parallel();
-        if (model_.loads.empty() && model_.pressures.empty() && model_.prescribed.empty()) {
+        if (model_.driven_by_platens()) {
             // Driven by platens alone: the load is the force they press with.
             model_.report.measure = ReportSpec::Measure::platen;
             model_.report.load_label = "platen force";

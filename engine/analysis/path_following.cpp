@@ -52,11 +52,8 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     system_.report(u_, lambda_ * system_.load(), r);
     if (model_.report.measure == ReportSpec::Measure::platen) {
         r.load = 0.0;
-        for (std::size_t k = 0; k < r.springs.size(); ++k) {
-            const FoundationSpring& s = model_.springs[k];
-            if (s.unilateral && !s.anchored && model_.bases[static_cast<std::size_t>(s.base)].moves())
-                r.load += std::hypot(r.springs[k].force[0], r.springs[k].force[1]);
-        }
+        for (std::size_t k = 0; k < r.springs.size(); ++k)
+            if (system_.on_moving_base(k)) r.load += std::hypot(r.springs[k].force[0], r.springs[k].force[1]);
         r.load *= model_.report.load_scale;
     }
     return r;

@@ -58,7 +58,7 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
       assembler_(free_count_, assembly_blocks(model, equation_)) {
     for (const FoundationSpring& s : model.springs)
         on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
-    driven_by_platens_ = model.loads.empty() && model.pressures.empty() && model.prescribed.empty() && model.has_moving_base();
+    driven_by_platens_ = model.driven_by_platens();
     // One plastic hinge per node where exactly two inelastic elements meet: the first
     // element's end carries the capacity, the second's keeps only its pseudo-spring.
     std::vector<int> members(model.nodes.size(), 0);

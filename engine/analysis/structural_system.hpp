@@ -44,6 +44,7 @@ public:
     bool driven_by_platens() const { return driven_by_platens_; }
     // The forces the moving bases exert at the last evaluation (free DOFs).
     Eigen::VectorXd platen_force() const;
+    bool on_moving_base(std::size_t spring) const { return on_moving_base_[spring]; }
     // Whether every element's hinge states (frozen or not) agree with the evaluated state.
     bool hinge_states_consistent() const;
 

@@ -201,6 +201,10 @@ struct Model {
     bool has_unilateral_base() const;
     // Whether a base moves with the load factor (a platen).
     bool has_moving_base() const;
+    // Whether loads, pressures or prescribed displacements act (scaled by λ).
+    bool loaded() const { return !loads.empty() || !pressures.empty() || !prescribed.empty(); }
+    // Nothing but moving bases drives the structure.
+    bool driven_by_platens() const { return !loaded() && has_moving_base(); }
     // Whether the reference loads have one direction (parallel forces, or moments only).
     bool loads_parallel() const;
     // Whether the only load is one pressure, equal on every loaded element (it is then reported).
