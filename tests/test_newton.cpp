@@ -79,6 +79,23 @@ struct OneSpringContact final : ToyProblem {
     bool active_ = false, changed_ = false;
 };
 
+// The same springs with the contact's state kept from the predictor on (a frozen active set),
+// re-decided only when Newton releases it: equilibrium with a contradicted set comes first.
+struct FrozenContact final : ToyProblem {
+    FrozenContact() : ToyProblem(1, Eigen::VectorXd::Ones(1)) {}
+    static constexpr double k1 = 1.0, k2 = 1e3, gap = 0.5;
+    bool evaluate(int iteration, bool release) override {
+        if (iteration == 0 || release) active_ = x_[0] >= gap;
+        return ToyProblem::evaluate(iteration, release);
+    }
+    void internal(Eigen::VectorXd& r, Eigen::MatrixXd& K) override {
+        r = Eigen::VectorXd::Constant(1, k1 * x_[0] + (active_ ? k2 * (x_[0] - gap) : 0.0));
+        K = Eigen::MatrixXd::Constant(1, 1, k1 + (active_ ? k2 : 0.0));
+    }
+    bool settled() const override { return active_ == (x_[0] >= gap); }
+    bool active_ = false;
+};
+
 } // namespace
 
 TEST_CASE("Newton with arc length passes the limit point of a two-DOF snap-through", "[newton]") {
@@ -127,6 +144,32 @@ TEST_CASE("Load control past the limit point snaps to the far stable branch or f
         const double v = problem.x_[0];
         CHECK(v > 1.0 + std::sqrt(1.0 - 2.2 / 3.0)); // beyond the valley: the stable far branch
         CHECK(problem.lambda_ == Approx(SnapThrough::f(v)).margin(1e-6));
+    }
+}
+
+TEST_CASE("Iterations spent re-deciding a contradicted active set are counted apart", "[newton]") {
+    // The increment size adapts to the iterations before settling (analysis/path_following.cpp):
+    // re-deciding takes the same iterations at any increment.
+    LinearSolver solver;
+    NewtonSettings settings;
+    settings.residual_tolerance = 1e-12;
+    SECTION("the open spring stays open: nothing to re-decide") {
+        FrozenContact problem;
+        LoadControl constraint(0.4);
+        const NewtonResult r = solve_increment(problem, constraint, settings, solver);
+        REQUIRE(r.converged());
+        CHECK(r.iterations_before_settling == 0);
+        CHECK(problem.x_[0] == Approx(0.4 / FrozenContact::k1).epsilon(1e-12));
+    }
+    SECTION("the spring closes: equilibrium open at iteration 1, then closed") {
+        FrozenContact problem;
+        LoadControl constraint(1.5);
+        const NewtonResult r = solve_increment(problem, constraint, settings, solver);
+        REQUIRE(r.converged());
+        const double k1 = FrozenContact::k1, k2 = FrozenContact::k2, g = FrozenContact::gap;
+        CHECK(problem.x_[0] == Approx((1.5 + k2 * g) / (k1 + k2)).epsilon(1e-12));
+        CHECK(r.iterations_before_settling == 1);
+        CHECK(r.iterations > r.iterations_before_settling);
     }
 }
 

@@ -308,11 +308,13 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
     const double sign = h >= 0.0 ? 1.0 : -1.0;
     double next = std::abs(h);
     if (a.adaptive) {
-        // Toward the desired iteration count, as √(desired/iterations); but a step whose last
-        // iteration still contracted the residual tenfold was inside Newton's basin: its extra
-        // iterations went to hinges and contacts settling, not to a step too large, so it is not
-        // shrunk for them (otherwise plastic phases keep the increment small for good).
-        double factor = std::sqrt(static_cast<double>(a.desired_iterations) / std::max(outcome.iterations, 1));
+        // Toward the desired iteration count, as √(desired/iterations). Iterations spent after
+        // equilibrium was first reached, re-deciding contradicted active sets (fibres, hinges,
+        // contacts), do not count: that takes the same few iterations at any increment, so
+        // shrinking for them would keep the increment small for good. Likewise a step whose last
+        // iteration still contracted the residual tenfold was inside Newton's basin.
+        const int iterations = outcome.iterations_before_settling > 0 ? outcome.iterations_before_settling : outcome.iterations;
+        double factor = std::sqrt(static_cast<double>(a.desired_iterations) / std::max(iterations, 1));
         if (outcome.contraction <= 0.1) factor = std::max(factor, 1.0);
         next = std::abs(used) * std::clamp(factor, 0.5, 2.0);
         if (std::abs(used) < std::abs(h) && factor >= 1.0) next = std::max(next, std::abs(h)); // a landing step

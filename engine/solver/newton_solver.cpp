@@ -74,6 +74,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             // Equilibrium with frozen active sets that the state contradicts: let them be
             // re-decided once, then freeze again (an active-set iteration).
             release = !settled && relative <= settings.residual_tolerance * settings.stagnation_factor;
+            if (release && result.iterations_before_settling == 0) result.iterations_before_settling = it;
             // Below the tolerance and no longer falling: round-off, which a nearly singular tangent
             // (near a bifurcation, a membrane far stiffer than its bending) turns into corrections
             // as large as a tiny increment, so they would never pass the correction test.

@@ -67,6 +67,10 @@ struct NewtonResult {
     double load_change = 0.0;  // Δλ
     int negative_pivots_seen = 0; // most negative pivots of any tangent factorised
     double contraction = 1.0;     // last residual over the one before, at acceptance
+    // Iterations until equilibrium was first reached with active sets the state contradicted;
+    // those after it went to re-deciding them (contact, hinges, fibres), which takes the same
+    // few iterations at any increment size. 0: no set was re-decided.
+    int iterations_before_settling = 0;
     bool converged() const { return rule != Acceptance::none; }
 };
 
