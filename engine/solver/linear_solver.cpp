@@ -7,9 +7,10 @@
 namespace plastica {
 
 void LinearSolver::analyse(const SparseMatrix& K) {
-    const SparseMatrix full = K.selfadjointView<Eigen::Lower>();
+    // From the self-adjoint view AMD forms the full pattern once; from a full matrix it would
+    // form A + Aᵀ again (two more copies of K: a third of the peak memory of a large model).
     Eigen::AMDOrdering<int> amd;
-    amd(full, order_inverse_);
+    amd(K.selfadjointView<Eigen::Lower>(), order_inverse_);
     order_ = order_inverse_.inverse();
     // Permute a copy of K whose values are their own indices: the result tells each value of
     // the permuted triangle where it comes from (a symmetric permutation only moves values).
