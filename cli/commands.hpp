@@ -20,5 +20,6 @@ int stability_command(const Args& args);
 int sweep_command(const Args& args);
 int merge_command(const Args& args);
 int report_command(const Args& args);
+int schema_command(const Args& args);
 
 } // namespace plastica::cli

@@ -22,6 +22,7 @@ Commands:
   sweep SCENE      many runs of a scene with keys varied (grid or Monte Carlo); sweep.csv
   merge DIR        sweep.csv from the runs a sweep folder holds (after GNU Parallel or Slurm)
   report OUT_DIR   one self-contained HTML page of a result folder (CI artifacts)
+  schema           the arrays a result series may hold, as a Markdown table
 
 Run 'plastica COMMAND --help' for the options of a command.
 Exit codes: 0 success, 1 comparison failed, 2 bad input, 3 analysis stopped early,
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
     mallopt(M_TOP_PAD, 64 << 20);
     // Commands that draw are compiled into plastica-draw only; plastica hands them over.
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"stability", stability_command}, {"report", report_command},
+        {"run", run_command}, {"stability", stability_command}, {"report", report_command}, {"schema", schema_command},
 #ifdef PLASTICA_DRAWING
         {"render", render_command}, {"compare", compare_command}, {"study", study_command},
         {"section", section_command}, {"sweep", sweep_command}, {"merge", merge_command},

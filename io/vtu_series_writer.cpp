@@ -1,6 +1,7 @@
 #include "vtu_series_writer.hpp"
 
 #include "atomic_file.hpp"
+#include "result_schema.hpp"
 
 #include <unistd.h>
 
@@ -23,10 +24,6 @@ std::string step_file_name(int step) {
 }
 
 namespace {
-
-bool has_bilateral(const Model& m) {
-    return std::any_of(m.springs.begin(), m.springs.end(), [](const FoundationSpring& s) { return !s.unilateral; });
-}
 
 // force·length, force/length: the compound units of moments and pressures.
 std::string compound(const std::string& a, const char* op, const std::string& b) {
@@ -53,42 +50,6 @@ std::pair<std::string, std::string> reported_units(const Model& m) {
 }
 
 } // namespace
-
-std::vector<std::string> VtuSeriesWriter::point_arrays(const Model& m) {
-    std::vector<std::string> names{"displacement", "rotation", "initial_position", "bending_moment"};
-    if (!m.supports.empty() || !m.prescribed.empty()) names.push_back("reaction");
-    if (!m.supports.empty()) names.push_back("support");
-    if (!m.loads.empty() || !m.pressures.empty()) names.push_back("applied_load");
-    if (has_bilateral(m)) names.push_back("spring_force");
-    if (m.has_unilateral_base()) {
-        names.push_back("contact_force");
-        names.push_back("gap");
-        names.push_back("contact");
-    }
-    if (m.has_plasticity(Plasticity::hinges)) {
-        names.push_back("plastic_utilisation");
-        names.push_back("hinge_state");
-    }
-    return names;
-}
-
-std::vector<std::string> VtuSeriesWriter::cell_arrays(const Model& m) {
-    std::vector<std::string> names{"axial_force", "moment_i", "moment_j", "shear"};
-    if (m.has_plasticity(Plasticity::distributed)) {
-        names.push_back("yielded_share");
-        names.push_back("section_yielded_share");
-        names.push_back("section_curvature");
-        names.push_back("section_moment");
-    }
-    if (m.has_plasticity(Plasticity::hinges)) {
-        names.push_back("ei_ratio");
-        names.push_back("utilisation_i");
-        names.push_back("utilisation_j");
-        names.push_back("hinge_state_i");
-        names.push_back("hinge_state_j");
-    }
-    return names;
-}
 
 VtuSeriesWriter::VtuSeriesWriter(const Model& model, const std::string& directory, SeriesOptions options)
     : model_(&model), directory_(directory), pvd_path_((fs::path(directory) / (model.name + ".pvd")).string()),
@@ -119,6 +80,17 @@ void VtuSeriesWriter::finish() {
 
 namespace {
 
+// The file's code of an end's state (the schema's codes, not the engine's enumeration).
+result::HingeCode hinge_code(HingeState state) {
+    switch (state) {
+    case HingeState::elastic: return result::HingeCode::elastic;
+    case HingeState::yielding: return result::HingeCode::yielding;
+    case HingeState::plastic: return result::HingeCode::plastic;
+    case HingeState::failed: return result::HingeCode::failed;
+    }
+    return result::HingeCode::elastic;
+}
+
 std::vector<double>& real(XmlArray& a) { return std::get<std::vector<double>>(a.values); }
 std::vector<std::int32_t>& integer(XmlArray& a) { return std::get<std::vector<std::int32_t>>(a.values); }
 
@@ -132,14 +104,16 @@ void set3(XmlArray& a, std::size_t tuple, double x, double y, double z) {
 } // namespace
 
 void VtuSeriesWriter::write_step(const StepResult& r) {
+    namespace name = result::name;
     const Model& m = *model_;
+    const auto has = [&m](const char* array) { return result::present(result::find(array), m); };
     const std::size_t n = m.nodes.size(), ne = m.elements.size();
     XmlDataset grid;
     grid.points.resize(3 * n);
     grid.lines.reserve(ne);
     for (const ElementSpec& e : m.elements) grid.lines.push_back({e.node_i, e.node_j});
-    XmlArray displacement = real_array("displacement", n, 3), rotation = real_array("rotation", n),
-             initial = real_array("initial_position", n, 3);
+    XmlArray displacement = real_array(name::displacement, n, 3), rotation = real_array(name::rotation, n),
+             initial = real_array(name::initial_position, n, 3);
     for (std::size_t i = 0; i < n; ++i) {
         const double ux = r.displacement[3 * i], uy = r.displacement[3 * i + 1];
         grid.points[3 * i] = m.nodes[i].x + ux;
@@ -151,15 +125,15 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     std::vector<XmlArray>& pd = grid.point_data;
     std::vector<XmlArray>& cd = grid.cell_data;
     pd.push_back(std::move(displacement));
-    grid.active_vectors = "displacement";
+    grid.active_vectors = name::displacement;
     pd.push_back(std::move(rotation));
     pd.push_back(std::move(initial));
 
     // Nodal bending moment: the mean of the element-end moments meeting at the node.
-    XmlArray moment = real_array("bending_moment", n);
+    XmlArray moment = real_array(name::bending_moment, n);
     std::vector<int> count(n, 0);
-    XmlArray axial = real_array("axial_force", ne), mi = real_array("moment_i", ne), mj = real_array("moment_j", ne),
-             shear = real_array("shear", ne);
+    XmlArray axial = real_array(name::axial_force, ne), mi = real_array(name::moment_i, ne), mj = real_array(name::moment_j, ne),
+             shear = real_array(name::shear, ne);
     for (std::size_t e = 0; e < ne; ++e) {
         const BeamForces& f = r.elements[e].forces;
         real(axial)[e] = f.axial;
@@ -181,24 +155,36 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     cd.push_back(std::move(shear));
 
     // What holds and what pushes: reactions at supported and prescribed DOFs (the force on the
-    // structure), which DOFs each node's support fixes (bits 1 ux, 2 uy, 4 rz), and the applied
-    // load λF (with pressure as it follows the members).
-    if (!m.supports.empty() || !m.prescribed.empty()) pd.push_back({"reaction", 3, r.reaction});
-    if (!m.supports.empty()) {
-        XmlArray fixed = integer_array("support", n);
+    // structure), which DOFs each node's support fixes, and the applied load λF (with pressure
+    // as it follows the members). Forces are vectors, moments scalars of their own.
+    const auto force_and_moment = [&](const char* force_name, const char* moment_name, const std::vector<double>& nodal) {
+        XmlArray force = real_array(force_name, n, 3), moment_of = real_array(moment_name, n);
+        for (std::size_t i = 0; i < n; ++i) {
+            set3(force, i, nodal[3 * i], nodal[3 * i + 1], 0.0);
+            real(moment_of)[i] = nodal[3 * i + 2];
+        }
+        pd.push_back(std::move(force));
+        pd.push_back(std::move(moment_of));
+    };
+    if (has(name::reaction)) force_and_moment(name::reaction, name::reaction_moment, r.reaction);
+    if (has(name::support)) {
+        XmlArray fixed = integer_array(name::support, n);
         for (const Support& s : m.supports)
-            integer(fixed)[s.node] |= (s.fixed[0] ? 1 : 0) | (s.fixed[1] ? 2 : 0) | (s.fixed[2] ? 4 : 0);
+            integer(fixed)[s.node] |= (s.fixed[0] ? result::fixes_ux : 0) | (s.fixed[1] ? result::fixes_uy : 0) |
+                                      (s.fixed[2] ? result::fixes_rz : 0);
         pd.push_back(std::move(fixed));
     }
-    if (!m.loads.empty() || !m.pressures.empty()) pd.push_back({"applied_load", 3, r.applied_load});
-    if (has_bilateral(m)) {
-        XmlArray spring = real_array("spring_force", n, 3);
+    if (has(name::applied_load)) force_and_moment(name::applied_load, name::applied_moment, r.applied_load);
+    if (has(name::spring_force)) {
+        std::vector<double> nodal(3 * n, 0.0);
         for (const SpringResult& s : r.springs)
-            if (!s.unilateral) set3(spring, s.node, s.force[0], s.force[1], s.force[2]);
-        pd.push_back(std::move(spring));
+            if (!s.unilateral)
+                for (int k = 0; k < 3; ++k) nodal[3 * static_cast<std::size_t>(s.node) + k] = s.force[k];
+        force_and_moment(name::spring_force, name::spring_moment, nodal);
     }
-    if (m.has_unilateral_base()) {
-        XmlArray contact = real_array("contact_force", n, 3), gap = real_array("gap", n), state = integer_array("contact", n);
+    if (has(name::contact_force)) {
+        XmlArray contact = real_array(name::contact_force, n, 3), gap = real_array(name::gap, n),
+                 state = integer_array(name::contact, n);
         // A node may face more than one base (a ring between plates): its forces add up, its
         // gap is to the nearest base, and it is in contact when any base holds it.
         std::vector<bool> seen(n, false);
@@ -210,18 +196,19 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
             double& g = real(gap)[s.node];
             g = seen[s.node] ? std::min(g, s.gap) : s.gap;
             seen[s.node] = true;
-            if (s.active) integer(state)[s.node] = 1;
+            if (s.active) integer(state)[s.node] = static_cast<int>(result::ContactCode::closed);
         }
         pd.push_back(std::move(contact));
         pd.push_back(std::move(gap));
         pd.push_back(std::move(state));
     }
-    if (m.has_plasticity(Plasticity::distributed)) {
+    if (has(name::yielded_share)) {
         // One tuple per element, one component per integration point (ξ order); elements
         // without fibre sections along them carry zeros.
         const int points = m.integration_points();
-        XmlArray most = real_array("yielded_share", ne), share = real_array("section_yielded_share", ne, points),
-                 curvature = real_array("section_curvature", ne, points), moment_at = real_array("section_moment", ne, points);
+        XmlArray most = real_array(name::yielded_share, ne), share = real_array(name::section_yielded_share, ne, points),
+                 curvature = real_array(name::section_curvature, ne, points),
+                 moment_at = real_array(name::section_moment, ne, points);
         for (std::size_t e = 0; e < ne; ++e) {
             const std::vector<SectionReport>& sections = r.elements[e].sections;
             const int available = std::min(points, static_cast<int>(sections.size()));
@@ -240,10 +227,11 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
         cd.push_back(std::move(curvature));
         cd.push_back(std::move(moment_at));
     }
-    if (m.has_plasticity(Plasticity::hinges)) {
-        XmlArray util = real_array("plastic_utilisation", n), hinge = integer_array("hinge_state", n);
-        XmlArray ei = real_array("ei_ratio", ne), ui = real_array("utilisation_i", ne), uj = real_array("utilisation_j", ne);
-        XmlArray end_state[2] = {integer_array("hinge_state_i", ne), integer_array("hinge_state_j", ne)};
+    if (has(name::hinge_state)) {
+        XmlArray util = real_array(name::plastic_utilisation, n), hinge = integer_array(name::hinge_state, n);
+        XmlArray ei = real_array(name::ei_ratio, ne), ui = real_array(name::utilisation_i, ne),
+                 uj = real_array(name::utilisation_j, ne);
+        XmlArray end_state[2] = {integer_array(name::hinge_state_i, ne), integer_array(name::hinge_state_j, ne)};
         for (std::size_t e = 0; e < ne; ++e) {
             const ElementResult& er = r.elements[e];
             if (!er.hinged) {
@@ -255,7 +243,7 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
             real(uj)[e] = er.hinge[1].utilisation;
             const int nodes[2] = {m.elements[e].node_i, m.elements[e].node_j};
             for (int end = 0; end < 2; ++end) {
-                const int state = static_cast<int>(er.hinge[end].state);
+                const int state = static_cast<int>(hinge_code(er.hinge[end].state));
                 integer(end_state[end])[e] = state;
                 real(util)[nodes[end]] = std::max(real(util)[nodes[end]], er.hinge[end].utilisation);
                 integer(hinge)[nodes[end]] = std::max(integer(hinge)[nodes[end]], state);
@@ -272,46 +260,46 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
 
     const double time = options_.time == SeriesTime::step ? static_cast<double>(r.step) : r.arc_length;
     std::vector<XmlArray>& fd = grid.field_data;
-    fd.push_back(field_value("TimeValue", time));
-    fd.push_back(field_value("load_factor", r.load_factor));
-    fd.push_back(field_value("load", r.load));
-    fd.push_back(field_value("control_displacement", r.control_displacement));
-    fd.push_back(field_value("step", r.step));
-    fd.push_back(field_value("iterations", r.iterations));
-    fd.push_back(field_value("contact_count", r.contact_count));
-    fd.push_back(field_value("hinge_count", r.hinge_count));
-    if (m.report.mirror_x) fd.push_back(field_value("mirror_x", *m.report.mirror_x));
+    fd.push_back(field_value(name::time_value, time));
+    fd.push_back(field_value(name::load_factor, r.load_factor));
+    fd.push_back(field_value(name::load, r.load));
+    fd.push_back(field_value(name::control_displacement, r.control_displacement));
+    fd.push_back(field_value(name::step, r.step));
+    fd.push_back(field_value(name::iterations, r.iterations));
+    fd.push_back(field_value(name::contact_count, r.contact_count));
+    fd.push_back(field_value(name::hinge_count, r.hinge_count));
+    if (has(name::mirror_x)) fd.push_back(field_value(name::mirror_x, *m.report.mirror_x));
     // Names for pictures: the render stage reads them from here, not from the scene file.
-    fd.push_back(field_text("scene", m.name));
-    fd.push_back(field_text("title", m.title));
-    fd.push_back(field_text("load_label", m.report.load_label));
-    fd.push_back(field_text("displacement_label", m.report.displacement_label));
+    fd.push_back(field_text(name::scene, m.name));
+    fd.push_back(field_text(name::title, m.title));
+    fd.push_back(field_text(name::load_label, m.report.load_label));
+    fd.push_back(field_text(name::displacement_label, m.report.displacement_label));
     // Units, when the scene names them: those of the reported load and displacement follow from
     // what they measure.
-    if (!m.report.length_unit.empty() || !m.report.force_unit.empty()) {
-        fd.push_back(field_text("length_unit", m.report.length_unit));
-        fd.push_back(field_text("force_unit", m.report.force_unit));
-        fd.push_back(field_text("load_unit", units_.load));
-        fd.push_back(field_text("displacement_unit", units_.displacement));
+    if (has(name::length_unit)) {
+        fd.push_back(field_text(name::length_unit, m.report.length_unit));
+        fd.push_back(field_text(name::force_unit, m.report.force_unit));
+        fd.push_back(field_text(name::load_unit, units_.load));
+        fd.push_back(field_text(name::displacement_unit, units_.displacement));
     }
 
-    const std::string name = step_file_name(r.step);
-    const std::string path = (fs::path(directory_) / "vtu" / name).string();
+    const std::string file = "vtu/" + step_file_name(r.step);
+    const std::string path = (fs::path(directory_) / file).string();
     write_file_atomically(path, unstructured_grid_xml(grid, options_.compression));
     try {
-        append_to_pvd(time, "vtu/" + name);
+        append_to_pvd(time, file);
     } catch (...) {
         fs::remove(path); // not listed, so not kept: the series ends at the step before
         throw;
     }
-    entries_.emplace_back(time, "vtu/" + name);
+    entries_.emplace_back(time, file);
 }
 
 void VtuSeriesWriter::write_base() {
     const Model& m = *model_;
     if (m.springs.empty()) return;
     XmlDataset poly;
-    XmlArray kind = integer_array("kind", 0); // 0 spring anchor, 1 rigid base
+    XmlArray kind = integer_array(result::name::base_kind, 0);
     auto add_point = [&poly](double x, double y) {
         poly.points.insert(poly.points.end(), {x, y, 0.0});
         return static_cast<std::int64_t>(poly.point_count() - 1);
@@ -319,12 +307,12 @@ void VtuSeriesWriter::write_base() {
     for (const FoundationSpring& s : m.springs) {
         if (s.unilateral) continue; // a base line holds these (drawn below); a tensionless bed shows by its contact forces
         poly.vertices.push_back(add_point(m.nodes[s.node].x, m.nodes[s.node].y));
-        integer(kind).push_back(0);
+        integer(kind).push_back(static_cast<int>(result::BaseKind::spring_anchor));
     }
     // Each rigid line, long enough for a structure that spreads over it: twice the structure's
     // extent on either side of its centre. A platen's line is drawn where it is at λ = 0 and
     // moves by λ·motion (cell array "motion"; λ is each step's load_factor).
-    XmlArray motion = real_array("motion", poly.vertices.size(), 3);
+    XmlArray motion = real_array(result::name::base_motion, poly.vertices.size(), 3);
     for (const BaseLine& base : m.bases) {
         double lo = 1e300, hi = -1e300;
         const double tx = -base.normal[1], ty = base.normal[0];
@@ -337,11 +325,11 @@ void VtuSeriesWriter::write_base() {
         const std::int64_t a = add_point(base.point[0] + (mid - 2 * half) * tx, base.point[1] + (mid - 2 * half) * ty);
         const std::int64_t b = add_point(base.point[0] + (mid + 2 * half) * tx, base.point[1] + (mid + 2 * half) * ty);
         poly.lines.push_back({a, b});
-        integer(kind).push_back(1);
+        integer(kind).push_back(static_cast<int>(result::BaseKind::rigid_line));
         for (double v : {base.motion[0], base.motion[1], 0.0}) real(motion).push_back(v);
     }
     poly.cell_data.push_back(std::move(kind));
-    if (m.has_moving_base()) poly.cell_data.push_back(std::move(motion));
+    if (result::present(result::find(result::name::base_motion), m)) poly.cell_data.push_back(std::move(motion));
     write_file_atomically((fs::path(directory_) / "base.vtp").string(), poly_data_xml(poly, options_.compression));
     has_base_file_ = true;
 }

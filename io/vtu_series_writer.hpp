@@ -4,7 +4,8 @@
 // is never rewritten whole, whatever the step count). The PVD time is monotone (the
 // step index, or the cumulative arc length); the load factor is field data. The base line and
 // spring anchors go once to base.vtp, listed as part 1 of every time step.
-// Arrays are written only where the scene has them (DESIGN §5).
+// Arrays are those of the result schema (result_schema.hpp), written only where the scene has
+// them (DESIGN §5).
 #pragma once
 
 #include "analysis/step_result.hpp"
@@ -39,10 +40,6 @@ public:
 
     std::size_t steps_written() const { return entries_.size(); }
     const std::string& pvd_path() const { return pvd_path_; }
-
-    // Array names a scene produces (for tests and the README).
-    static std::vector<std::string> point_arrays(const Model& model);
-    static std::vector<std::string> cell_arrays(const Model& model);
 
 private:
     void write_step(const StepResult& r);

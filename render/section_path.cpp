@@ -1,4 +1,5 @@
 #include "section_path.hpp"
+#include "result_schema.hpp"
 #include "render_error.hpp"
 
 #include <vtkCellData.h>
@@ -9,7 +10,7 @@ namespace plastica::render {
 
 SectionPath most_loaded_end(const ResultSeries& series) {
     auto last = read_step(series.steps.back().file);
-    vtkDataArray* use[2] = {last->GetCellData()->GetArray("utilisation_i"), last->GetCellData()->GetArray("utilisation_j")};
+    vtkDataArray* use[2] = {last->GetCellData()->GetArray(result::name::utilisation_i), last->GetCellData()->GetArray(result::name::utilisation_j)};
     if (!use[0] || !use[1]) throw RenderError(series.steps.back().file + ": no plastic hinges (an elastic scene)");
     vtkIdType element = 0;
     int end = 0;
@@ -19,10 +20,10 @@ SectionPath most_loaded_end(const ResultSeries& series) {
             if (use[k]->GetComponent(e, 0) > most) most = use[k]->GetComponent(e, 0), element = e, end = k;
     SectionPath path;
     path.where = "element " + std::to_string(element + 1) + ", end " + (end == 0 ? "i" : "j");
-    const char* moment = end == 0 ? "moment_i" : "moment_j";
+    const char* moment = end == 0 ? result::name::moment_i : result::name::moment_j;
     for (const SeriesStep& step : series.steps) {
         auto grid = read_step(step.file);
-        vtkDataArray* n = grid->GetCellData()->GetArray("axial_force");
+        vtkDataArray* n = grid->GetCellData()->GetArray(result::name::axial_force);
         vtkDataArray* m = grid->GetCellData()->GetArray(moment);
         if (!n || !m || element >= n->GetNumberOfTuples())
             throw RenderError(step.file + ": no 'axial_force' or '" + moment + "' for element " + std::to_string(element + 1));

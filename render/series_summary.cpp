@@ -1,5 +1,6 @@
 #include "series_summary.hpp"
 #include "render_error.hpp"
+#include "result_schema.hpp"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace plastica::render {
 
@@ -25,10 +27,10 @@ std::string array_names(vtkUnstructuredGrid* grid) {
     return names;
 }
 
-int count_state(vtkDataArray* states, int state) {
+int count_state(vtkDataArray* states, result::HingeCode state) {
     int n = 0;
     if (!states) return 0;
-    for (vtkIdType i = 0; i < states->GetNumberOfTuples(); ++i) n += states->GetComponent(i, 0) == state;
+    for (vtkIdType i = 0; i < states->GetNumberOfTuples(); ++i) n += states->GetComponent(i, 0) == static_cast<int>(state);
     return n;
 }
 
@@ -39,17 +41,11 @@ std::string with_unit(const std::string& label, const std::string& unit) {
 }
 
 std::string array_unit(const SeriesSummary& s, const std::string& array) {
-    if (s.length_unit.empty() && s.force_unit.empty()) return {};
-    const auto in = [&](std::initializer_list<const char*> names) {
-        return std::any_of(names.begin(), names.end(), [&](const char* n) { return array == n; });
-    };
-    if (in({"bending_moment", "moment_i", "moment_j", "section_moment"}))
-        return s.force_unit.empty() || s.length_unit.empty() ? "" : s.force_unit + "·" + s.length_unit;
-    if (in({"axial_force", "shear", "contact_force", "spring_force", "reaction", "applied_load"})) return s.force_unit;
-    if (in({"displacement", "gap", "initial_position"})) return s.length_unit;
-    if (in({"rotation"})) return "rad";
-    if (in({"section_curvature"})) return s.length_unit.empty() ? "" : "1/" + s.length_unit;
-    return {};
+    try {
+        return result::unit(result::find(array), s.length_unit, s.force_unit);
+    } catch (const std::out_of_range&) {
+        return {}; // an array of another program's series
+    }
 }
 
 bool on_mirror_line(const SeriesSummary& summary, const double* initial_position) {
@@ -80,9 +76,9 @@ double chosen_magnification(const ResultSeries& series) {
     double largest = 0.0, b[4] = {1e300, -1e300, 1e300, -1e300};
     for (const SeriesStep& step : series.steps) {
         auto grid = read_step(step.file);
-        vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
-        vtkDataArray* x0 = grid->GetPointData()->GetArray("initial_position");
-        if (grid->GetPointData()->GetArray("contact_force") || !u || !x0) return 1.0;
+        vtkDataArray* u = grid->GetPointData()->GetArray(result::name::displacement);
+        vtkDataArray* x0 = grid->GetPointData()->GetArray(result::name::initial_position);
+        if (grid->GetPointData()->GetArray(result::name::contact_force) || !u || !x0) return 1.0;
         for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i) {
             largest = std::max(largest, std::hypot(u->GetComponent(i, 0), u->GetComponent(i, 1)));
             b[0] = std::min(b[0], x0->GetComponent(i, 0)), b[1] = std::max(b[1], x0->GetComponent(i, 0));
@@ -98,8 +94,8 @@ double chosen_magnification(const ResultSeries& series) {
 
 vtkSmartPointer<vtkUnstructuredGrid> magnified(vtkUnstructuredGrid* step, double k) {
     if (k == 1.0) return step;
-    vtkDataArray* u = step->GetPointData()->GetArray("displacement");
-    vtkDataArray* x0 = step->GetPointData()->GetArray("initial_position");
+    vtkDataArray* u = step->GetPointData()->GetArray(result::name::displacement);
+    vtkDataArray* x0 = step->GetPointData()->GetArray(result::name::initial_position);
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->ShallowCopy(step);
     if (!u || !x0) return grid;
@@ -124,24 +120,24 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         const std::string& file = series.steps[k].file;
         auto grid = magnified(read_step(file), s.magnify);
         if (k == 0) {
-            s.scene = field_text(grid, "scene", "result");
-            s.title = field_text(grid, "title");
-            s.load_label = field_text(grid, "load_label", "load");
-            s.displacement_label = field_text(grid, "displacement_label", "control displacement");
-            s.length_unit = field_text(grid, "length_unit");
-            s.force_unit = field_text(grid, "force_unit");
-            s.load_unit = field_text(grid, "load_unit");
-            s.displacement_unit = field_text(grid, "displacement_unit");
-            s.unilateral = grid->GetPointData()->GetArray("contact_force") != nullptr;
-            s.inelastic = grid->GetCellData()->GetArray("hinge_state_i") != nullptr;
-            if (grid->GetFieldData()->GetArray("mirror_x")) {
+            s.scene = field_text(grid, result::name::scene, "result");
+            s.title = field_text(grid, result::name::title);
+            s.load_label = field_text(grid, result::name::load_label, "load");
+            s.displacement_label = field_text(grid, result::name::displacement_label, "control displacement");
+            s.length_unit = field_text(grid, result::name::length_unit);
+            s.force_unit = field_text(grid, result::name::force_unit);
+            s.load_unit = field_text(grid, result::name::load_unit);
+            s.displacement_unit = field_text(grid, result::name::displacement_unit);
+            s.unilateral = grid->GetPointData()->GetArray(result::name::contact_force) != nullptr;
+            s.inelastic = grid->GetCellData()->GetArray(result::name::hinge_state_i) != nullptr;
+            if (grid->GetFieldData()->GetArray(result::name::mirror_x)) {
                 s.mirrored = true;
-                s.mirror_x = field_value(grid, "mirror_x");
+                s.mirror_x = field_value(grid, result::name::mirror_x);
             }
             // Unless asked otherwise: the spread of plasticity where the members have fibre
             // sections along them, else the bending moment.
             if (field.empty())
-                field = grid->GetCellData()->GetArray("yielded_share") ? "yielded_share" : "bending_moment";
+                field = grid->GetCellData()->GetArray(result::name::yielded_share) ? result::name::yielded_share : result::name::bending_moment;
             s.field.name = field;
             vtkDataArray* a = grid->GetPointData()->GetArray(field.c_str());
             if (!a) {
@@ -152,7 +148,7 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                 throw RenderError(file + ": no array '" + field + "' to colour by; the series has: " + array_names(grid));
             s.field.components = a->GetNumberOfComponents();
         }
-        vtkDataArray* initial = grid->GetPointData()->GetArray("initial_position");
+        vtkDataArray* initial = grid->GetPointData()->GetArray(result::name::initial_position);
         for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
             double p[3];
             grid->GetPoint(i, p);
@@ -174,14 +170,14 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             range[1] = std::max(range[1], v);
         }
         CurvePoint c;
-        c.step = static_cast<int>(field_value(grid, "step"));
-        c.displacement = field_value(grid, "control_displacement");
-        c.load = field_value(grid, "load");
-        if (grid->GetFieldData()->GetArray("contact_count")) c.contact_count = static_cast<int>(field_value(grid, "contact_count"));
-        if (grid->GetFieldData()->GetArray("hinge_count")) c.hinge_count = static_cast<int>(field_value(grid, "hinge_count"));
+        c.step = static_cast<int>(field_value(grid, result::name::step));
+        c.displacement = field_value(grid, result::name::control_displacement);
+        c.load = field_value(grid, result::name::load);
+        if (grid->GetFieldData()->GetArray(result::name::contact_count)) c.contact_count = static_cast<int>(field_value(grid, result::name::contact_count));
+        if (grid->GetFieldData()->GetArray(result::name::hinge_count)) c.hinge_count = static_cast<int>(field_value(grid, result::name::hinge_count));
         s.curve.push_back(c);
-        if (vtkDataArray* force = grid->GetPointData()->GetArray("contact_force")) {
-            vtkDataArray* state = grid->GetPointData()->GetArray("contact");
+        if (vtkDataArray* force = grid->GetPointData()->GetArray(result::name::contact_force)) {
+            vtkDataArray* state = grid->GetPointData()->GetArray(result::name::contact);
             for (vtkIdType i = 0; i < force->GetNumberOfTuples(); ++i)
                 if (!state || state->GetComponent(i, 0) > 0) {
                     const double f = tuple_magnitude(force, i);
@@ -189,16 +185,22 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                     s.any_contact = s.any_contact || f > 0.0;
                 }
         }
-        const std::pair<const char*, SeriesSummary::NodalArrows*> arrows[] = {{"applied_load", &s.loads}, {"reaction", &s.reactions}};
-        for (const auto& [name, stats] : arrows) {
-            vtkDataArray* a = grid->GetPointData()->GetArray(name);
-            if (!a) continue;
+        const struct {
+            const char* force;
+            const char* moment;
+            SeriesSummary::NodalArrows* stats;
+        } arrows[] = {{result::name::applied_load, result::name::applied_moment, &s.loads},
+                      {result::name::reaction, result::name::reaction_moment, &s.reactions}};
+        for (const auto& [force, moment, stats] : arrows) {
+            vtkDataArray* a = grid->GetPointData()->GetArray(force);
+            vtkDataArray* m = grid->GetPointData()->GetArray(moment);
+            if (!a || !m) continue;
             for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
                 const double whole = on_mirror_line(s, initial->GetTuple3(i)) ? 2.0 : 1.0;
                 const double fx = whole * a->GetComponent(i, 0), fy = whole * a->GetComponent(i, 1);
                 const double f = std::hypot(fx, fy);
                 stats->max_force = std::max(stats->max_force, f);
-                stats->max_moment = std::max(stats->max_moment, whole * std::abs(a->GetComponent(i, 2)));
+                stats->max_moment = std::max(stats->max_moment, whole * std::abs(m->GetComponent(i, 0)));
                 if (f <= 0.0) continue;
                 // An arrow points at its node, so its tail lies on the side the force comes from.
                 if (fx > 0.3 * f) stats->sides |= 1;
@@ -207,11 +209,11 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                 if (fy < -0.3 * f) stats->sides |= 8;
             }
         }
-        for (const char* end : {"hinge_state_i", "hinge_state_j"}) {
+        for (const char* end : {result::name::hinge_state_i, result::name::hinge_state_j}) {
             vtkDataArray* st = grid->GetCellData()->GetArray(end);
-            s.any_yielding = s.any_yielding || count_state(st, 1) > 0;
-            s.any_plastic = s.any_plastic || count_state(st, 2) > 0;
-            s.any_failed = s.any_failed || count_state(st, 3) > 0;
+            s.any_yielding = s.any_yielding || count_state(st, result::HingeCode::yielding) > 0;
+            s.any_plastic = s.any_plastic || count_state(st, result::HingeCode::plastic) > 0;
+            s.any_failed = s.any_failed || count_state(st, result::HingeCode::failed) > 0;
         }
     }
     if (s.mirrored) {

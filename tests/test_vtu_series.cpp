@@ -6,9 +6,11 @@
 #include "run_report.hpp"
 #include "vtu_series_writer.hpp"
 #include "xml_dataset.hpp"
+#include "result_schema.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <vtkAbstractArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -23,6 +25,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -68,12 +71,6 @@ std::vector<std::pair<double, std::string>> pvd_entries(const fs::path& pvd) {
     return out;
 }
 
-std::set<std::string> names(vtkFieldData* data) {
-    std::set<std::string> out;
-    for (int i = 0; i < data->GetNumberOfArrays(); ++i) out.insert(data->GetArrayName(i));
-    return out;
-}
-
 } // namespace
 
 TEST_CASE("Every VTU step reads back through VTK with the engine's values to full precision", "[output]") {
@@ -112,34 +109,186 @@ TEST_CASE("Every VTU step reads back through VTK with the engine's values to ful
     }
 }
 
-TEST_CASE("Each ring scene writes exactly the arrays it needs", "[output]") {
-    for (const std::string scene : {"ring_elastic", "ring_inelastic", "ring_bilateral", "ring_distributed"}) {
-        const Series s = run_with_series(scene, 2);
-        vtkNew<vtkXMLUnstructuredGridReader> reader;
-        reader->SetFileName((s.folder / "vtu" / step_file_name(2)).string().c_str());
-        reader->Update();
-        const auto points = names(reader->GetOutput()->GetPointData());
-        const auto cells = names(reader->GetOutput()->GetCellData());
-        const auto expect_points = VtuSeriesWriter::point_arrays(s.model);
-        const auto expect_cells = VtuSeriesWriter::cell_arrays(s.model);
-        CAPTURE(scene);
-        CHECK(points == std::set<std::string>(expect_points.begin(), expect_points.end()));
-        CHECK(cells == std::set<std::string>(expect_cells.begin(), expect_cells.end()));
-        const bool inelastic = scene == "ring_inelastic", unilateral = scene != "ring_bilateral";
-        CHECK(points.count("plastic_utilisation") == (inelastic ? 1u : 0u));
-        CHECK(cells.count("ei_ratio") == (inelastic ? 1u : 0u));
-        const bool distributed = scene == "ring_distributed";
-        CHECK(cells.count("yielded_share") == (distributed ? 1u : 0u));
-        CHECK(cells.count("section_curvature") == (distributed ? 1u : 0u));
-        CHECK(points.count("hinge_state") == (inelastic ? 1u : 0u));
-        CHECK(points.count("contact_force") == (unilateral ? 1u : 0u));
-        CHECK(points.count("spring_force") == (unilateral ? 0u : 1u));
-        // The base line (and spring anchors) as part 1 of the collection.
-        vtkNew<vtkXMLPolyDataReader> base;
-        base->SetFileName((s.folder / "base.vtp").string().c_str());
-        base->Update();
-        CHECK(base->GetOutput()->GetNumberOfLines() == (unilateral ? 1 : 0));
+namespace {
+
+// What the engine says an array holds at (tuple, component), computed here from the step's
+// results without the writer; NaN where the test has no independent value (text arrays).
+double engine_value(const std::string& array, const Series& s, const StepResult& r, vtkIdType t, int c) {
+    namespace name = result::name;
+    const std::size_t i = static_cast<std::size_t>(t);
+    const auto nodal = [&](const std::vector<double>& v) { return c < 2 ? v[3 * i + c] : 0.0; };
+    const auto spring = [&](bool unilateral, int k) {
+        double sum = 0.0;
+        for (const SpringResult& sp : r.springs)
+            if (sp.unilateral == unilateral && static_cast<std::size_t>(sp.node) == i) sum += sp.force[k];
+        return sum;
+    };
+    const auto end_state = [&](int end) { return static_cast<double>(static_cast<int>(r.elements[i].hinge[end].state)); };
+    if (array == name::displacement) return c < 2 ? r.displacement[3 * i + c] : 0.0;
+    if (array == name::rotation) return r.displacement[3 * i + 2];
+    if (array == name::initial_position) return c == 0 ? s.model.nodes[i].x : c == 1 ? s.model.nodes[i].y : 0.0;
+    if (array == name::reaction) return nodal(r.reaction);
+    if (array == name::reaction_moment) return r.reaction[3 * i + 2];
+    if (array == name::applied_load) return nodal(r.applied_load);
+    if (array == name::applied_moment) return r.applied_load[3 * i + 2];
+    if (array == name::spring_force) return c < 2 ? spring(false, c) : 0.0;
+    if (array == name::spring_moment) return spring(false, 2);
+    if (array == name::contact_force) return c < 2 ? spring(true, c) : 0.0;
+    if (array == name::axial_force) return r.elements[i].forces.axial;
+    if (array == name::moment_i) return r.elements[i].forces.moment_i;
+    if (array == name::moment_j) return r.elements[i].forces.moment_j;
+    if (array == name::shear) return r.elements[i].forces.shear;
+    if (array == name::utilisation_i) return r.elements[i].hinged ? r.elements[i].hinge[0].utilisation : 0.0;
+    if (array == name::utilisation_j) return r.elements[i].hinged ? r.elements[i].hinge[1].utilisation : 0.0;
+    if (array == name::hinge_state_i) return r.elements[i].hinged ? end_state(0) : 0.0;
+    if (array == name::hinge_state_j) return r.elements[i].hinged ? end_state(1) : 0.0;
+    if (array == name::section_curvature) return c < static_cast<int>(r.elements[i].sections.size()) ? r.elements[i].sections[c].curvature : 0.0;
+    if (array == name::section_moment) return c < static_cast<int>(r.elements[i].sections.size()) ? r.elements[i].sections[c].moment : 0.0;
+    if (array == name::section_yielded_share)
+        return c < static_cast<int>(r.elements[i].sections.size()) ? r.elements[i].sections[c].yielded_share : 0.0;
+    if (array == name::load_factor) return r.load_factor;
+    if (array == name::load) return r.load;
+    if (array == name::control_displacement) return r.control_displacement;
+    if (array == name::step || array == name::time_value) return r.step;
+    if (array == name::iterations) return r.iterations;
+    if (array == name::contact_count) return r.contact_count;
+    if (array == name::hinge_count) return r.hinge_count;
+    if (array == name::mirror_x) return *s.model.report.mirror_x;
+    if (array == name::support) {
+        int bits = 0;
+        for (const Support& sp : s.model.supports)
+            if (static_cast<std::size_t>(sp.node) == i)
+                bits |= (sp.fixed[0] ? 1 : 0) | (sp.fixed[1] ? 2 : 0) | (sp.fixed[2] ? 4 : 0);
+        return bits;
     }
+    return std::nan(""); // summaries over several values (bending_moment, gap, contact, yielded_share, …): checked below
+}
+
+vtkAbstractArray* array_at(vtkUnstructuredGrid* grid, const result::Array& a) {
+    switch (a.where) {
+    case result::Where::point: return grid->GetPointData()->GetAbstractArray(std::string(a.name).c_str());
+    case result::Where::cell: return grid->GetCellData()->GetAbstractArray(std::string(a.name).c_str());
+    default: return grid->GetFieldData()->GetAbstractArray(std::string(a.name).c_str());
+    }
+}
+
+std::vector<fs::path> shipped_scenes() {
+    std::vector<fs::path> scenes;
+    for (const char* folder : {"/models", "/models/gallery"})
+        for (const auto& f : fs::directory_iterator(std::string(PLASTICA_SOURCE_DIR) + folder))
+            if (f.path().extension() == ".toml") scenes.push_back(f.path());
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+} // namespace
+
+TEST_CASE("Every shipped scene writes exactly the schema's arrays it needs, of their type, with the engine's values", "[output]") {
+    const auto scenes = shipped_scenes();
+    REQUIRE(scenes.size() >= 18);
+    std::set<std::string> seen; // every schema array is written by some shipped scene
+    for (const fs::path& scene : scenes) {
+        CAPTURE(scene.filename().string());
+        Series s;
+        s.model = read_scene(scene.string());
+        s.model.analysis.max_steps = 3;
+        s.folder = fs::temp_directory_path() / ("plastica_schema_" + scene.stem().string());
+        fs::remove_all(s.folder);
+        {
+            VtuSeriesWriter writer(s.model, s.folder.string(), {1, SeriesTime::step, Compression::none});
+            PathFollowing analysis(s.model);
+            analysis.run({std::ref(writer), [&](const StepResult& r) { s.steps.push_back(r); }});
+            writer.finish();
+        }
+        const StepResult& r = s.steps.back();
+        vtkNew<vtkXMLUnstructuredGridReader> reader;
+        reader->SetFileName((s.folder / "vtu" / step_file_name(r.step)).string().c_str());
+        reader->Update();
+        vtkUnstructuredGrid* grid = reader->GetOutput();
+        REQUIRE(grid->GetNumberOfPoints() == static_cast<vtkIdType>(s.model.nodes.size()));
+        std::size_t expected_in_file = 0;
+        for (const result::Array& a : result::arrays()) {
+            if (a.where == result::Where::base) continue;
+            const std::string array(a.name);
+            CAPTURE(array);
+            vtkAbstractArray* read = array_at(grid, a);
+            REQUIRE((read != nullptr) == result::present(a, s.model));
+            if (!read) continue;
+            ++expected_in_file;
+            seen.insert(array);
+            switch (a.type) {
+            case result::Type::float64: CHECK(read->GetDataType() == VTK_DOUBLE); break;
+            case result::Type::int32: CHECK(read->GetDataType() == VTK_INT); break;
+            case result::Type::text: CHECK(vtkStringArray::SafeDownCast(read) != nullptr); break;
+            }
+            const int components = a.components == 0 ? s.model.integration_points() : a.components;
+            CHECK(read->GetNumberOfComponents() == components);
+            const vtkIdType tuples = a.where == result::Where::point  ? grid->GetNumberOfPoints()
+                                     : a.where == result::Where::cell ? grid->GetNumberOfCells()
+                                                                      : 1;
+            CHECK(read->GetNumberOfTuples() == tuples);
+            vtkDataArray* values = vtkDataArray::SafeDownCast(read);
+            if (!values) continue;
+            for (vtkIdType t = 0; t < values->GetNumberOfTuples(); ++t)
+                for (int c = 0; c < components; ++c) {
+                    const double want = engine_value(array, s, r, t, c);
+                    if (!std::isnan(want)) CHECK(values->GetComponent(t, c) == want);
+                }
+        }
+        // Nothing beside the schema.
+        CHECK(static_cast<std::size_t>(grid->GetPointData()->GetNumberOfArrays() + grid->GetCellData()->GetNumberOfArrays() +
+                                       grid->GetFieldData()->GetNumberOfArrays()) == expected_in_file);
+        // The summaries: the nodal moment is the mean of the ends there; a node in contact has
+        // a contact force and no gap; the largest yielded share is the largest of the sections'.
+        vtkDataArray* nodal_moment = grid->GetPointData()->GetArray(result::name::bending_moment);
+        std::vector<double> sum(s.model.nodes.size(), 0.0);
+        std::vector<int> count(s.model.nodes.size(), 0);
+        for (std::size_t e = 0; e < s.model.elements.size(); ++e) {
+            sum[s.model.elements[e].node_i] += r.elements[e].forces.moment_i, ++count[s.model.elements[e].node_i];
+            sum[s.model.elements[e].node_j] += r.elements[e].forces.moment_j, ++count[s.model.elements[e].node_j];
+        }
+        for (std::size_t i = 0; i < sum.size(); ++i)
+            CHECK(nodal_moment->GetComponent(i, 0) == Approx(count[i] ? sum[i] / count[i] : 0.0).margin(1e-12));
+        if (vtkDataArray* contact = grid->GetPointData()->GetArray(result::name::contact)) {
+            int closed = 0;
+            for (vtkIdType i = 0; i < contact->GetNumberOfTuples(); ++i)
+                closed += contact->GetComponent(i, 0) == static_cast<int>(result::ContactCode::closed);
+            CHECK(closed == r.contact_count);
+        }
+        if (vtkDataArray* share = grid->GetCellData()->GetArray(result::name::yielded_share))
+            for (vtkIdType e = 0; e < share->GetNumberOfTuples(); ++e) {
+                double largest = 0.0;
+                for (const SectionReport& sec : r.elements[e].sections) largest = std::max(largest, sec.yielded_share);
+                CHECK(share->GetComponent(e, 0) == largest);
+            }
+        // base.vtp: its arrays as the schema says.
+        if (fs::exists(s.folder / "base.vtp")) {
+            vtkNew<vtkXMLPolyDataReader> base;
+            base->SetFileName((s.folder / "base.vtp").string().c_str());
+            base->Update();
+            for (const result::Array& a : result::arrays()) {
+                if (a.where != result::Where::base) continue;
+                CAPTURE(a.name);
+                vtkDataArray* read = base->GetOutput()->GetCellData()->GetArray(std::string(a.name).c_str());
+                CHECK((read != nullptr) == result::present(a, s.model));
+                if (!read) continue;
+                seen.insert(std::string(a.name));
+                CHECK(read->GetNumberOfComponents() == a.components);
+            }
+        }
+    }
+    for (const result::Array& a : result::arrays()) {
+        CAPTURE(a.name);
+        CHECK(seen.count(std::string(a.name)) == 1);
+    }
+}
+
+TEST_CASE("The README's table of result arrays is the schema's", "[output]") {
+    std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/README.md");
+    std::stringstream text;
+    text << in.rdbuf();
+    CHECK_THAT(text.str(), Catch::Contains(result::markdown_table()));
+    CHECK_THROWS_WITH(result::find("temperature"), Catch::Contains("no array 'temperature'"));
 }
 
 TEST_CASE("The sections along the members read back at every integration point", "[output][distributed]") {

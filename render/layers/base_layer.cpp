@@ -1,4 +1,5 @@
 #include "flat_marks.hpp"
+#include "result_schema.hpp"
 #include "layers/layers.hpp"
 #include "result_series.hpp"
 
@@ -43,9 +44,9 @@ public:
 
     // A platen is drawn where the step's load factor has moved it.
     void show(vtkUnstructuredGrid* step) override {
-        if (!base_data_->GetCellData()->GetArray("motion")) return;
+        if (!base_data_->GetCellData()->GetArray(result::name::base_motion)) return;
         line_.clear();
-        draw_lines(view_, field_value(step, "load_factor"));
+        draw_lines(view_, field_value(step, result::name::load_factor));
     }
 
     std::vector<LegendEntry> legend() const override {
@@ -57,8 +58,8 @@ private:
     // Each base line as a bar with hatching on the far side from the structure, clipped to the
     // drawing so the legend column stays clear.
     void draw_lines(const ViewGeometry& view, double load_factor) {
-        vtkDataArray* kind = base_data_->GetCellData()->GetArray("kind");
-        vtkDataArray* motion = base_data_->GetCellData()->GetArray("motion");
+        vtkDataArray* kind = base_data_->GetCellData()->GetArray(result::name::base_kind);
+        vtkDataArray* motion = base_data_->GetCellData()->GetArray(result::name::base_motion);
         vtkCellArray* lines = base_data_->GetLines();
         lines->InitTraversal();
         vtkIdType n;
@@ -67,7 +68,7 @@ private:
         const double cy = 0.5 * (summary_.bounds[2] + summary_.bounds[3]);
         const vtkIdType first_line = base_data_->GetNumberOfVerts();
         for (vtkIdType c = 0; lines->GetNextCell(n, ids); ++c) {
-            if (n < 2 || (kind && kind->GetComponent(first_line + c, 0) != 1)) continue;
+            if (n < 2 || (kind && kind->GetComponent(first_line + c, 0) != static_cast<int>(result::BaseKind::rigid_line))) continue;
             double a[3], b[3];
             base_data_->GetPoint(ids[0], a);
             base_data_->GetPoint(ids[n - 1], b);

@@ -1,4 +1,5 @@
 #include "flat_marks.hpp"
+#include "result_schema.hpp"
 #include "layers/layers.hpp"
 
 #include <vtkActor.h>
@@ -31,8 +32,8 @@ public:
 
     void show(vtkUnstructuredGrid* step) override {
         arrows_.clear();
-        vtkDataArray* force = step->GetPointData()->GetArray("contact_force");
-        vtkDataArray* state = step->GetPointData()->GetArray("contact");
+        vtkDataArray* force = step->GetPointData()->GetArray(result::name::contact_force);
+        vtkDataArray* state = step->GetPointData()->GetArray(result::name::contact);
         if (!force) return;
         for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
             if (state && state->GetComponent(i, 0) <= 0) continue;

@@ -1,4 +1,5 @@
 #include "flat_marks.hpp"
+#include "result_schema.hpp"
 #include "layers/layers.hpp"
 
 #include <vtkActor.h>
@@ -26,8 +27,8 @@ public:
         under_.clear();
         failed_.clear();
         vtkCellData* cd = step->GetCellData();
-        vtkDataArray* states[2] = {cd->GetArray("hinge_state_i"), cd->GetArray("hinge_state_j")};
-        vtkDataArray* use[2] = {cd->GetArray("utilisation_i"), cd->GetArray("utilisation_j")};
+        vtkDataArray* states[2] = {cd->GetArray(result::name::hinge_state_i), cd->GetArray(result::name::hinge_state_j)};
+        vtkDataArray* use[2] = {cd->GetArray(result::name::utilisation_i), cd->GetArray(result::name::utilisation_j)};
         if (!states[0] || !states[1] || !use[0] || !use[1]) return;
         const double r = view_.pixels(4.5);
         for (vtkIdType c = 0; c < step->GetNumberOfCells(); ++c) {
@@ -39,19 +40,19 @@ public:
             step->GetPoint(ids[0], a);
             step->GetPoint(ids[1], b);
             for (int end = 0; end < 2; ++end) {
-                const int state = static_cast<int>(states[end]->GetComponent(c, 0));
-                if (state == 0) continue;
+                const auto state = static_cast<result::HingeCode>(states[end]->GetComponent(c, 0));
+                if (state == result::HingeCode::elastic) continue;
                 const double u = std::clamp(use[end]->GetComponent(c, 0), 0.0, 1.0);
                 // A quarter of the element in from its end, so the two ends meeting at a node stay apart.
                 const double* from = end == 0 ? a : b;
                 const double* to = end == 0 ? b : a;
                 const double x = from[0] + 0.25 * (to[0] - from[0]), y = from[1] + 0.25 * (to[1] - from[1]);
-                if (state == 1) {
+                if (state == result::HingeCode::yielding) {
                     markers_.disc(x, y, r * (0.5 + 0.6 * u), mix(colour::hinge_yielding_low, colour::hinge_yielding_high, u));
                 } else {
                     under_.disc(x, y, 1.55 * r, colour::outline);
                     markers_.disc(x, y, 1.3 * r, colour::hinge_plastic);
-                    if (state == 3) failed_.cross(x, y, 2.2 * r, view_.pixels(2), colour::hinge_failed);
+                    if (state == result::HingeCode::failed) failed_.cross(x, y, 2.2 * r, view_.pixels(2), colour::hinge_failed);
                 }
             }
         }

@@ -1,4 +1,5 @@
 #include "layers/layers.hpp"
+#include "result_schema.hpp"
 #include "ribbon.hpp"
 
 #include <vtkActor.h>
@@ -19,7 +20,7 @@ class InitialShapeLayer final : public Layer {
 public:
     explicit InitialShapeLayer(vtkUnstructuredGrid* first_step) {
         vtkNew<vtkPoints> points;
-        vtkDataArray* positions = first_step->GetPointData()->GetArray("initial_position");
+        vtkDataArray* positions = first_step->GetPointData()->GetArray(result::name::initial_position);
         points->SetNumberOfPoints(first_step->GetNumberOfPoints());
         for (vtkIdType i = 0; i < first_step->GetNumberOfPoints(); ++i) points->SetPoint(i, positions->GetTuple3(i));
         vtkNew<vtkCellArray> lines;

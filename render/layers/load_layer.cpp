@@ -1,4 +1,5 @@
 #include "flat_marks.hpp"
+#include "result_schema.hpp"
 #include "layers/layers.hpp"
 
 #include <vtkActor.h>
@@ -19,10 +20,11 @@ std::string short_number(double v) {
     return text;
 }
 
-// Arrows at nodes from a point array of (fx, fy, mz): the applied loads, or the reactions of
-// the supports (forces on the structure, drawn the same way).
+// Arrows at nodes from a point array of forces and one of moments: the applied loads, or the
+// reactions of the supports (forces on the structure, drawn the same way).
 struct ArrowKind {
-    const char* array;
+    const char* force_array;
+    const char* moment_array;
     Rgb colour;
     const char* force_label;
     const char* moment_label;
@@ -51,16 +53,17 @@ public:
 
     void show(vtkUnstructuredGrid* step) override {
         arrows_.clear();
-        vtkDataArray* load = step->GetPointData()->GetArray(kind_.array);
-        vtkDataArray* initial = step->GetPointData()->GetArray("initial_position");
-        if (!load || !initial) return;
+        vtkDataArray* load = step->GetPointData()->GetArray(kind_.force_array);
+        vtkDataArray* moment = step->GetPointData()->GetArray(kind_.moment_array);
+        vtkDataArray* initial = step->GetPointData()->GetArray(result::name::initial_position);
+        if (!load || !moment || !initial) return;
         for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
             double p[3];
             step->GetPoint(i, p);
             // A half model carries half of a load on its mirror line: the arrow shows the whole.
             const double whole = on_mirror_line(summary_, initial->GetTuple3(i)) ? 2.0 : 1.0;
             const double fx = whole * load->GetComponent(i, 0), fy = whole * load->GetComponent(i, 1),
-                         m = whole * load->GetComponent(i, 2);
+                         m = whole * moment->GetComponent(i, 0);
             const double f = std::hypot(fx, fy);
             if (stats_.max_force > 0 && f > 1e-9 * stats_.max_force) {
                 // The tip touches the ribbon's edge; short arrows keep a visible length.
@@ -83,7 +86,7 @@ public:
         if (stats_.max_force > 0) text = "longest: " + short_number(stats_.max_force) + unit(summary_.force_unit);
         if (stats_.max_moment > 0)
             text += (text.empty() ? "" : "\n") + std::string("moment ") + short_number(stats_.max_moment) +
-                    unit(array_unit(summary_, "moment_i"));
+                    unit(array_unit(summary_, result::name::moment_i));
         return text + "\n(largest in the run)";
     }
 
@@ -119,11 +122,11 @@ private:
 } // namespace
 
 std::unique_ptr<Layer> load_layer(const SeriesSummary& summary) {
-    return std::make_unique<LoadLayer>(summary, summary.loads, ArrowKind{"applied_load", colour::load, "applied load", "applied moment"});
+    return std::make_unique<LoadLayer>(summary, summary.loads, ArrowKind{result::name::applied_load, result::name::applied_moment, colour::load, "applied load", "applied moment"});
 }
 
 std::unique_ptr<Layer> reaction_layer(const SeriesSummary& summary) {
-    return std::make_unique<LoadLayer>(summary, summary.reactions, ArrowKind{"reaction", colour::reaction, "support reaction", "support moment"});
+    return std::make_unique<LoadLayer>(summary, summary.reactions, ArrowKind{result::name::reaction, result::name::reaction_moment, colour::reaction, "support reaction", "support moment"});
 }
 
 } // namespace plastica::render

@@ -1,4 +1,5 @@
 #include "flat_marks.hpp"
+#include "result_schema.hpp"
 #include "layers/layers.hpp"
 
 #include <vtkActor.h>
@@ -12,7 +13,7 @@ namespace plastica::render {
 
 namespace {
 
-constexpr int fixes_ux = 1, fixes_uy = 2, fixes_rz = 4; // the VTU's `support` bits
+using result::fixes_ux, result::fixes_uy, result::fixes_rz;
 
 struct SupportedNode {
     vtkIdType point;
@@ -23,8 +24,8 @@ struct SupportedNode {
 class SupportLayer final : public Layer {
 public:
     SupportLayer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step) : summary_(summary) {
-        vtkDataArray* fixed = first_step->GetPointData()->GetArray("support");
-        vtkDataArray* initial = first_step->GetPointData()->GetArray("initial_position");
+        vtkDataArray* fixed = first_step->GetPointData()->GetArray(result::name::support);
+        vtkDataArray* initial = first_step->GetPointData()->GetArray(result::name::initial_position);
         if (!fixed || !initial) return;
         for (vtkIdType i = 0; i < fixed->GetNumberOfTuples(); ++i) {
             const int bits = static_cast<int>(fixed->GetComponent(i, 0));

@@ -1,0 +1,120 @@
+// The result schema: the one list of what a result series holds (DESIGN §2). Every array of a
+// step's VTU and of base.vtp, with where it lives, its type and components, what it measures and
+// which scenes have it, and the codes of the integer states. The VTU writer, the render stage,
+// the README's table (`plastica schema` prints it; a test compares) and the tests read it, so a
+// name is spelled in one place.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace plastica {
+struct Model;
+}
+
+namespace plastica::result {
+
+enum class Where { point, cell, field, base };
+enum class Type { float64, int32, text };
+// What an array's values measure, for their unit.
+enum class Quantity { none, length, rotation, force, moment, curvature, reported_load, reported_displacement };
+// Which scenes write an array (DESIGN §5: only what a scene needs).
+enum class When {
+    always,
+    supported_or_prescribed, // a support or a prescribed displacement
+    supported,
+    loaded,                  // nodal loads or pressure
+    bilateral_springs,
+    unilateral_base,         // a rigid base or a tensionless bed
+    hinges,
+    distributed,
+    half_model,              // [report] mirror_x
+    units,                   // [report] names its units
+    spring_anchors,          // base.vtp: bilateral springs or rigid lines
+    moving_base,
+};
+
+struct Array {
+    std::string_view name;
+    Where where;
+    Type type;
+    int components;          // 0: one per integration point along the member
+    Quantity quantity;
+    When when;
+    std::string_view meaning;
+};
+
+// Every array, in the order the writer lays them out.
+const std::vector<Array>& arrays();
+// The schema's entry of a name; throws std::out_of_range for a name it does not hold.
+const Array& find(std::string_view name);
+// Whether a scene writes the array.
+bool present(const Array& array, const Model& model);
+// The names a scene writes at one place, in the schema's order.
+std::vector<std::string> names(Where where, const Model& model);
+// The unit of an array's values from the scene's length and force units ("" when unnamed).
+std::string unit(const Array& array, const std::string& length_unit, const std::string& force_unit);
+// The schema as the README's Markdown table.
+std::string markdown_table();
+
+// Names, so that a misspelt one does not compile instead of drawing nothing.
+namespace name {
+inline constexpr const char* displacement = "displacement";
+inline constexpr const char* rotation = "rotation";
+inline constexpr const char* initial_position = "initial_position";
+inline constexpr const char* bending_moment = "bending_moment";
+inline constexpr const char* reaction = "reaction";
+inline constexpr const char* reaction_moment = "reaction_moment";
+inline constexpr const char* support = "support";
+inline constexpr const char* applied_load = "applied_load";
+inline constexpr const char* applied_moment = "applied_moment";
+inline constexpr const char* spring_force = "spring_force";
+inline constexpr const char* spring_moment = "spring_moment";
+inline constexpr const char* contact_force = "contact_force";
+inline constexpr const char* gap = "gap";
+inline constexpr const char* contact = "contact";
+inline constexpr const char* plastic_utilisation = "plastic_utilisation";
+inline constexpr const char* hinge_state = "hinge_state";
+inline constexpr const char* axial_force = "axial_force";
+inline constexpr const char* moment_i = "moment_i";
+inline constexpr const char* moment_j = "moment_j";
+inline constexpr const char* shear = "shear";
+inline constexpr const char* yielded_share = "yielded_share";
+inline constexpr const char* section_yielded_share = "section_yielded_share";
+inline constexpr const char* section_curvature = "section_curvature";
+inline constexpr const char* section_moment = "section_moment";
+inline constexpr const char* ei_ratio = "ei_ratio";
+inline constexpr const char* utilisation_i = "utilisation_i";
+inline constexpr const char* utilisation_j = "utilisation_j";
+inline constexpr const char* hinge_state_i = "hinge_state_i";
+inline constexpr const char* hinge_state_j = "hinge_state_j";
+inline constexpr const char* time_value = "TimeValue";
+inline constexpr const char* load_factor = "load_factor";
+inline constexpr const char* load = "load";
+inline constexpr const char* control_displacement = "control_displacement";
+inline constexpr const char* step = "step";
+inline constexpr const char* iterations = "iterations";
+inline constexpr const char* contact_count = "contact_count";
+inline constexpr const char* hinge_count = "hinge_count";
+inline constexpr const char* mirror_x = "mirror_x";
+inline constexpr const char* scene = "scene";
+inline constexpr const char* title = "title";
+inline constexpr const char* load_label = "load_label";
+inline constexpr const char* displacement_label = "displacement_label";
+inline constexpr const char* length_unit = "length_unit";
+inline constexpr const char* force_unit = "force_unit";
+inline constexpr const char* load_unit = "load_unit";
+inline constexpr const char* displacement_unit = "displacement_unit";
+inline constexpr const char* base_kind = "kind";
+inline constexpr const char* base_motion = "motion";
+} // namespace name
+
+// Codes of the Int32 states.
+enum class HingeCode : int { elastic = 0, yielding = 1, plastic = 2, failed = 3 };
+enum class ContactCode : int { open = 0, closed = 1 };
+enum class BaseKind : int { spring_anchor = 0, rigid_line = 1 };
+// `support`: the sum of the DOFs a node's support fixes.
+inline constexpr int fixes_ux = 1, fixes_uy = 2, fixes_rz = 4;
+
+} // namespace plastica::result
