@@ -25,19 +25,29 @@ int compare_command(const Args& args) {
         ("reference", po::value<std::string>()->required(), "PNG or folder of stored references")
         ("threshold", po::value<int>()->default_value(defaults.threshold), "per-channel difference (0-255) below which pixels count as equal")
         ("max-fraction", po::value<double>()->default_value(defaults.max_fraction), "share of differing pixels an image may have")
+        ("region", po::value<std::string>(), "compare only x0,y0,x1,y1 of each picture (fractions of width and height, y from the top)")
         ("diff", po::value<std::string>(), "folder for <name>_diff.png of the images that fail")
         ("report", po::value<std::string>(), "an HTML page with every failing picture beside its reference and its difference (diff images in --diff, or beside the page)")
         ("quiet,q", "print failures only");
     po::positional_options_description positional;
     positional.add("actual", 1).add("reference", 1);
     po::variables_map vm;
-    if (auto code = parse_options(args, "plastica compare ACTUAL REFERENCE [--threshold T] [--max-fraction F] [--diff DIR] [--report FILE]",
+    if (auto code = parse_options(args, "plastica compare ACTUAL REFERENCE [--threshold T] [--max-fraction F] [--region X0,Y0,X1,Y1] [--diff DIR] [--report FILE]",
                                   options, positional, vm))
         return *code;
     render::CompareOptions o;
     o.threshold = vm["threshold"].as<int>();
     o.max_fraction = vm["max-fraction"].as<double>();
     if (vm.count("diff")) o.diff_folder = vm["diff"].as<std::string>();
+    if (vm.count("region")) {
+        const std::string text = vm["region"].as<std::string>();
+        double* g = o.region;
+        char tail = 0;
+        if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &g[0], &g[1], &g[2], &g[3], &tail) != 4) {
+            std::cerr << "plastica: --region takes x0,y0,x1,y1 (got '" << text << "')\n";
+            return bad_input;
+        }
+    }
     if (vm.count("report") && o.diff_folder.empty())
         o.diff_folder = (fs::path(vm["report"].as<std::string>()).parent_path() / "diff").string();
     std::vector<render::ImageVerdict> verdicts;

@@ -64,9 +64,15 @@ ImageVerdict compare_one(const std::string& name, const std::string& actual_path
     const auto* r = static_cast<unsigned char*>(reference->GetScalarPointer());
     const std::size_t n = static_cast<std::size_t>(da[0]) * da[1];
     std::vector<bool> differs(n, false);
-    std::size_t count = 0;
+    std::size_t count = 0, compared = 0;
     double sum = 0.0;
+    const int x0 = static_cast<int>(options.region[0] * da[0]), x1 = static_cast<int>(options.region[2] * da[0]);
+    const int y0 = static_cast<int>(options.region[1] * da[1]), y1 = static_cast<int>(options.region[3] * da[1]);
     for (std::size_t i = 0; i < n; ++i) {
+        // VTK's rows start at the bottom of the picture.
+        const int x = static_cast<int>(i % da[0]), y = da[1] - 1 - static_cast<int>(i / da[0]);
+        if (x < x0 || x >= x1 || y < y0 || y >= y1) continue;
+        ++compared;
         int worst = 0;
         for (int k = 0; k < 3; ++k) {
             const int delta = std::abs(int(a[i * ca + std::min(k, ca - 1)]) - int(r[i * cr + std::min(k, cr - 1)]));
@@ -75,8 +81,8 @@ ImageVerdict compare_one(const std::string& name, const std::string& actual_path
         }
         if (worst > options.threshold) differs[i] = true, ++count;
     }
-    v.differing_fraction = double(count) / double(n);
-    v.rms = std::sqrt(sum / (3.0 * n));
+    v.differing_fraction = double(count) / double(std::max<std::size_t>(compared, 1));
+    v.rms = std::sqrt(sum / (3.0 * std::max<std::size_t>(compared, 1)));
     vtkNew<vtkImageDifference> vtk;
     vtk->SetInputData(actual);
     vtk->SetImageData(reference);
@@ -100,6 +106,9 @@ std::vector<ImageVerdict> compare_pictures(const std::string& actual, const std:
         if (!fs::exists(p, ec)) throw RenderError(p + ": missing");
     if (options.threshold < 0 || options.threshold > 255) throw RenderError("--threshold takes 0 … 255");
     if (!(options.max_fraction >= 0.0 && options.max_fraction <= 1.0)) throw RenderError("--max-fraction takes 0 … 1");
+    const double* g = options.region;
+    if (!(g[0] >= 0.0 && g[0] < g[2] && g[2] <= 1.0 && g[1] >= 0.0 && g[1] < g[3] && g[3] <= 1.0))
+        throw RenderError("--region takes x0,y0,x1,y1: fractions of the width and height, 0 ≤ x0 < x1 ≤ 1, 0 ≤ y0 < y1 ≤ 1");
     const bool folders = fs::is_directory(actual, ec);
     if (folders != fs::is_directory(reference, ec))
         throw RenderError("compare two PNG files or two folders, not a file with a folder");

@@ -14,6 +14,10 @@ struct CompareOptions {
     int threshold = 16;             // per channel, 0–255: below it a pixel counts as equal
     double max_fraction = 0.001;    // an image passes when at most this share of pixels differ
     std::string diff_folder;        // where to write <name>_diff.png for failing images; empty: none
+    // Only pixels in [x0, x1) × [y0, y1) are compared (fractions of width and height, y from
+    // the top): a check of what one part of a picture shows, e.g. the structure without its
+    // legend. The differing fraction is of the region's pixels.
+    double region[4] = {0.0, 0.0, 1.0, 1.0};
 };
 
 struct ImageVerdict {

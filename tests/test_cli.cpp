@@ -202,6 +202,21 @@ TEST_CASE("plastica compare: same pictures pass, a missing picture fails, a size
     CHECK_THAT(unreadable.output, Catch::Contains("nothing.png: missing"));
 }
 
+TEST_CASE("plastica compare --region compares one part of each picture", "[cli][compare]") {
+    // Two frames of the same run: the structure and the status line differ, the right end of
+    // the title band (no text there) does not.
+    const fs::path frames = fs::path(PLASTICA_SOURCE_DIR) / "tests" / "snapshots" / "ring_elastic" / "frames";
+    const std::string pair = (frames / "frame_000200.png").string() + " " + (frames / "frame_000117.png").string();
+    CHECK(plastica("compare " + pair).code == 1);
+    const Result corner = plastica("compare " + pair + " --region 0.9,0,1,0.05");
+    CHECK(corner.code == 0);
+    CHECK_THAT(corner.output, Catch::Contains("all 1 images match"));
+    CHECK(plastica("compare " + pair + " --region 0,0.11,0.43,1").code == 1);
+    const Result bad = plastica("compare " + pair + " --region 0.5,0,0.2,1");
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("--region takes x0,y0,x1,y1"));
+}
+
 TEST_CASE("plastica study and plastica stability write their tables and charts", "[cli][study]") {
     const fs::path out = scratch("study");
     const Result study = plastica("study " + model("cantilever_tip_load.toml") + " --vary elements=4,8,16 -o " + out.string());
@@ -535,7 +550,7 @@ std::string browser_dom(const fs::path& page) {
 
 } // namespace
 
-TEST_CASE("plastica report writes one page a browser shows whole; compare --report shows each failing picture", "[cli][report]") {
+TEST_CASE("plastica report writes one page a browser shows whole, and compare --report shows each failing picture", "[cli][report]") {
     const fs::path out = scratch("report");
     REQUIRE(plastica("run " + model("ring_elastic.toml") + " -o " + out.string() + " --steps 0,100,200 -q").code == 0);
     const Result r = plastica("report " + out.string());

@@ -86,3 +86,62 @@ TEST_CASE("The plastic hinge tangent equals a finite difference within one loadi
     beam.compute(d, f, &K);
     CHECK((K - finite_difference_tangent(beam, d)).norm() < 1e-6 * K.norm());
 }
+
+namespace {
+
+// Central differences of a basic law's trial forces about e, every trial from the same
+// committed state (the return map is path independent within a step).
+Eigen::Matrix3d finite_difference_basic(BasicLaw& law, const Eigen::Vector3d& e) {
+    Eigen::Matrix3d k_fd, k;
+    Eigen::Vector3d qp, qm;
+    for (int j = 0; j < 3; ++j) {
+        const double h = 1e-7 * std::max(1e-3, std::abs(e[j]));
+        Eigen::Vector3d ep = e, em = e;
+        ep[j] += h;
+        em[j] -= h;
+        law.trial(ep, qp, k);
+        law.trial(em, qm, k);
+        k_fd.col(j) = (qp - qm) / (2.0 * h);
+    }
+    return k_fd;
+}
+
+} // namespace
+
+TEST_CASE("The plastic hinge tangent equals a finite difference while yielding and while fully plastic", "[element][plasticity]") {
+    // Rectangle 10 × 20, E = 200e3, fy = 250: My = 1.667e5, Mp = 1.5 My; L = 1000, so the
+    // antisymmetric end rotation θ gives M = 6EI θ / L and first yield near θ = 0.021; the
+    // ends reach capacity near θ = 0.4, once every fibre has yielded. A stretch gives
+    // N = 0.2 Ny (less once the ends flow along the capacity's normal), so the capacity rows
+    // have a slope dMp/dN that the tangent must carry.
+    SectionSpec s = rectangle_section(200e3, 10.0, 20.0, 20);
+    s.steel = bilinear_steel(200e3, 250.0, 0.0);
+    const double L = 1000.0, EA = 200e3 * 200.0, Ny = 250.0 * 200.0;
+    PlasticHingeLaw law(s, L);
+    const double stretch = 0.2 * Ny * L / EA; // reached at θ = 0.01, then held
+    Eigen::Vector3d q;
+    Eigen::Matrix3d k;
+    bool checked[3] = {false, false, false};
+    double theta = 0.0;
+    for (int step = 0; step < 200 && !(checked[1] && checked[2]); ++step) {
+        theta += 0.005;
+        const Eigen::Vector3d e(std::min(theta / 0.01, 1.0) * stretch, theta, theta);
+        law.trial(e, q, k);
+        law.commit();
+        const HingeState state = law.hinge(0).state;
+        const int regime = state == HingeState::yielding ? 1 : state == HingeState::plastic ? 2 : 0;
+        if (checked[regime] || regime == 0) continue;
+        // A trial a little further along the same path, in the same regime as the committed state.
+        const Eigen::Vector3d ahead = e + 2e-4 * Eigen::Vector3d(0.0, 1.0, 1.0);
+        law.trial(ahead, q, k);
+        const Eigen::Matrix3d k_fd = finite_difference_basic(law, ahead);
+        CAPTURE(regime, theta, q.transpose(), k, k_fd);
+        CHECK((k - k_fd).norm() <= 1e-6 * k.norm());
+        // The tangent has lost stiffness against the elastic one in bending.
+        CHECK(k(1, 1) < 0.999 * 4.0 * 200e3 * (10.0 * 8000.0 / 12.0) / L);
+        law.trial(e, q, k); // back to the committed state's trial before going on
+        checked[regime] = true;
+    }
+    CHECK(checked[1]);
+    CHECK(checked[2]);
+}

@@ -203,7 +203,7 @@ TEST_CASE("A stiff structure drawn with --magnify shows its displacements enlarg
     CHECK(summarise(open_series(ring.string()), "", 0.0).magnify == 1.0);
 }
 
-TEST_CASE("Reference points from a CSV join the chart as markers; a bad line is named", "[render]") {
+TEST_CASE("Reference points from a CSV join the chart as markers, and a bad line is named", "[render]") {
     unsetenv("DISPLAY");
     const fs::path series = solved_series("ring_elastic", 200, "reference_points");
     const fs::path csv = series / "table.csv";

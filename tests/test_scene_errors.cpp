@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 using namespace plastica;
 
 namespace {
@@ -180,4 +183,20 @@ TEST_CASE("A structure that is a mechanism before loading is named with its free
     const std::string why = analysis.initial_mechanism();
     CHECK_THAT(why, Catch::Contains("mechanism before loading"));
     CHECK_THAT(why, Catch::Contains("rz"));
+}
+
+TEST_CASE("Every test case can be run by its name from CTest", "[tests]") {
+    // catch_discover_tests splits a name at ';' into two CTest cases that match no test and so
+    // pass without running anything: no test name may hold one.
+    for (const auto& file : std::filesystem::directory_iterator(std::string(PLASTICA_SOURCE_DIR) + "/tests")) {
+        if (file.path().extension() != ".cpp") continue;
+        std::ifstream in(file.path());
+        std::string line;
+        for (int number = 1; std::getline(in, line); ++number) {
+            if (line.rfind("TEST_CASE(\"", 0) != 0) continue;
+            const std::string name = line.substr(11, line.find('"', 11) - 11);
+            CAPTURE(file.path().filename().string(), number, name);
+            CHECK(name.find(';') == std::string::npos);
+        }
+    }
 }
