@@ -10,19 +10,28 @@ using namespace plastica;
 
 namespace {
 
-Matrix6 finite_difference_tangent(CorotationalBeam& beam, const Vector6& d) {
-    Matrix6 K;
-    Vector6 fp, fm;
-    for (int j = 0; j < 6; ++j) {
-        const double h = 1e-6 * std::max(1.0, std::abs(d[j]));
-        Vector6 dp = d, dm = d;
-        dp[j] += h;
-        dm[j] -= h;
-        beam.compute(dp, fp, nullptr);
-        beam.compute(dm, fm, nullptr);
-        K.col(j) = (fp - fm) / (2.0 * h);
+// Central differences of a response f(x) (a vector of the size of x), step relative to each
+// component with a floor for components near zero.
+template <class Vector, class Response>
+Eigen::Matrix<double, Vector::RowsAtCompileTime, Vector::RowsAtCompileTime>
+central_differences(const Vector& x, double relative_step, double floor, Response f) {
+    Eigen::Matrix<double, Vector::RowsAtCompileTime, Vector::RowsAtCompileTime> K;
+    for (int j = 0; j < x.size(); ++j) {
+        const double h = relative_step * std::max(floor, std::abs(x[j]));
+        Vector xp = x, xm = x;
+        xp[j] += h;
+        xm[j] -= h;
+        K.col(j) = (f(xp) - f(xm)) / (2.0 * h);
     }
     return K;
+}
+
+Matrix6 finite_difference_tangent(CorotationalBeam& beam, const Vector6& d) {
+    return central_differences(d, 1e-6, 1.0, [&beam](const Vector6& x) {
+        Vector6 f;
+        beam.compute(x, f, nullptr);
+        return f;
+    });
 }
 
 } // namespace
@@ -92,18 +101,12 @@ namespace {
 // Central differences of a basic law's trial forces about e, every trial from the same
 // committed state (the return map is path independent within a step).
 Eigen::Matrix3d finite_difference_basic(BasicLaw& law, const Eigen::Vector3d& e) {
-    Eigen::Matrix3d k_fd, k;
-    Eigen::Vector3d qp, qm;
-    for (int j = 0; j < 3; ++j) {
-        const double h = 1e-7 * std::max(1e-3, std::abs(e[j]));
-        Eigen::Vector3d ep = e, em = e;
-        ep[j] += h;
-        em[j] -= h;
-        law.trial(ep, qp, k);
-        law.trial(em, qm, k);
-        k_fd.col(j) = (qp - qm) / (2.0 * h);
-    }
-    return k_fd;
+    return central_differences(e, 1e-7, 1e-3, [&law](const Eigen::Vector3d& x) {
+        Eigen::Vector3d q;
+        Eigen::Matrix3d k;
+        law.trial(x, q, k);
+        return q;
+    });
 }
 
 } // namespace
