@@ -125,7 +125,7 @@ std::string PathFollowing::initial_mechanism() {
     return s.str();
 }
 
-double PathFollowing::round_off_floor() const {
+PathFollowing::RoundOffFloor PathFollowing::round_off_floor() const {
     // A displacement is known to about eps·|u|, so the residual of K·u cannot be brought below
     // about eps·|K|·|u| (absolute values throughout): relative to the load, that is this
     // state's floor. K is stored as its lower triangle.
@@ -138,8 +138,17 @@ double PathFollowing::round_off_floor() const {
             floor[it.row()] += k * u[col];
             if (it.row() != col) floor[col] += k * u[it.row()];
         }
+    // The springs' share: their stiffness times the rounding of their node's displacement.
+    Eigen::VectorXd springs = Eigen::VectorXd::Zero(u_.size());
+    for (const FoundationSpring& s : model_.springs) {
+        const std::size_t at = static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(s.node);
+        const double k[3] = {s.kx, s.ky, s.krot};
+        for (std::size_t d = 0; d < 3; ++d) springs[at + d] += k[d] * std::abs(u_[at + d]);
+    }
     const double load = std::abs(lambda_) * system_.gather(system_.load()).norm();
-    return load > 0.0 ? std::numeric_limits<double>::epsilon() * floor.norm() / load : 0.0;
+    if (!(load > 0.0)) return {};
+    const double eps = std::numeric_limits<double>::epsilon();
+    return {eps * floor.norm() / load, eps * springs.norm() / load};
 }
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {
@@ -215,7 +224,8 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
                 beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit();
             }
             // The failed state's round-off floor, read only when the run stops here.
-            const double floor_at_failure = giving_up && outcome.failure != NewtonFailure::non_finite ? round_off_floor() : 0.0;
+            const RoundOffFloor floor_at_failure =
+                giving_up && outcome.failure != NewtonFailure::non_finite ? round_off_floor() : RoundOffFloor{};
             u_ = u_saved;
             lambda_ = lambda_saved;
             system_.revert();
@@ -237,11 +247,17 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
                     << to_string(outcome.failure) << " with the increment cut to " << std::abs(h)
                     << "; the residual ended at " << outcome.residual << " of the load, residual_tolerance "
                     << a.residual_tolerance << ")";
-                if (floor_at_failure >= 0.1 * a.residual_tolerance)
-                    why << ": round-off alone leaves about " << floor_at_failure
+                if (floor_at_failure.total >= 0.1 * a.residual_tolerance) {
+                    why << ": round-off alone leaves about " << floor_at_failure.total
                         << " of the load out of balance in this model (its stiffest terms times the rounding "
-                           "of its displacements), so the tolerance cannot be met; use fewer or longer "
-                           "elements, or a residual_tolerance above that";
+                           "of its displacements), so the tolerance cannot be met; ";
+                    if (floor_at_failure.from_springs >= 0.5 * floor_at_failure.total)
+                        why << "most of it comes from the foundation's penalty stiffness: lower it (the "
+                               "penetration falls as 1/k, so 1e4 to 1e6 times EI/L³ is plenty), or set a "
+                               "residual_tolerance above that";
+                    else
+                        why << "use fewer or longer elements, or a residual_tolerance above that";
+                }
             }
             summary.reason = why.str();
             break;

@@ -60,8 +60,12 @@ private:
     NewtonResult attempt_increment(double h, const RunControl& control);
     double next_increment(double h, double used, const NewtonResult& outcome) const;
     bool tangent_shows_limit();
-    // The residual, relative to the load, that round-off alone leaves at the current state.
-    double round_off_floor() const;
+    // The residual, relative to the load, that the rounding of the displacements alone leaves
+    // (see the definition), and the part of it the foundation springs' penalties cause.
+    struct RoundOffFloor {
+        double total = 0.0, from_springs = 0.0;
+    };
+    RoundOffFloor round_off_floor() const;
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;
     double control_value(const Eigen::VectorXd& u) const;
