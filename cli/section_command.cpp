@@ -5,12 +5,12 @@
 #include "options.hpp"
 #include "output_folder.hpp"
 
-#include "frame_composer.hpp"
 #include "png_file.hpp"
 #include "render_error.hpp"
 #include "scene_reader.hpp"
-#include "section/fibre_section.hpp"
-#include "section_path.hpp"
+#include "section/section_curves.hpp"
+#include "section_charts.hpp"
+#include "section_tables.hpp"
 
 #include <vtkImageData.h>
 
@@ -64,62 +64,30 @@ int section_command(const Args& args) {
     for (const SectionSpec& spec : model.sections) {
         if (vm.count("section") && spec.name != vm["section"].as<std::string>()) continue;
         if (!spec.steel) continue;
-        FibreSection section(spec);
-        const double Ny = section.axial_capacity_tension();
-        render::ChartFigure capacity{spec.name + ": N-M capacity of the fibre section", "bending moment M", "axial force N", {}, true};
-        render::ChartFigure curvature{spec.name + ": moment-curvature at constant axial force", "curvature", "bending moment M", {}, true};
-        // Both signs of the capacity and of first yield; one legend entry each.
-        capacity.series = {{"fully plastic Mp(N)", {}, {}, render::colour::curve_progress, 3.0f},
-                           {"", {}, {}, render::colour::curve_progress, 3.0f},
-                           {"first yield", {}, {}, render::colour::hinge_yielding_high, 2.0f},
-                           {"", {}, {}, render::colour::hinge_yielding_high, 2.0f}};
+        const FibreSection section(spec);
+        const std::vector<CapacityRow> capacity = capacity_table(section, points);
+        const std::vector<MomentCurvatureCurve> curvature = moment_curvature_family(section, {0.0, 0.2, 0.4, 0.6, 0.8}, 10.0, points - 1);
         {
             std::ofstream out(folder / (spec.name + "_capacity.csv"));
-            out.precision(12);
-            out << "axial_force,moment_positive,moment_negative,first_yield_moment\n";
-            for (int k = 0; k < points; ++k) {
-                const double N = -Ny + 2.0 * Ny * k / (points - 1);
-                const double plus = section.moment_capacity(N, 1.0), minus = -section.moment_capacity(N, -1.0);
-                const double yield = std::max(0.0, section.first_yield_moment(N));
-                out << N << ',' << plus << ',' << minus << ',' << yield << '\n';
-                capacity.series[0].x.push_back(plus);
-                capacity.series[1].x.push_back(minus);
-                capacity.series[2].x.push_back(yield);
-                capacity.series[3].x.push_back(-yield);
-                for (auto& c : capacity.series) c.y.push_back(N);
-            }
-        }
-        {
-            std::ofstream out(folder / (spec.name + "_moment_curvature.csv"));
-            out.precision(12);
-            out << "axial_ratio,axial_force,curvature,moment\n";
-            const double kappa_y = spec.steel->fy / spec.E / std::sqrt(spec.inertia / spec.area) / std::sqrt(3.0);
-            const render::Rgb shades[] = {{31, 90, 180}, {40, 150, 70}, {230, 120, 20}, {150, 30, 170}, {90, 90, 90}};
-            int shade = 0;
-            for (double ratio : {0.0, 0.2, 0.4, 0.6, 0.8}) {
-                render::ChartSeries line{"N/Ny = " + render::number(ratio), {}, {}, shades[shade++], 2.5f};
-                for (const MomentCurvaturePoint& p : section.moment_curvature(ratio * Ny, 10.0 * kappa_y, points - 1)) {
-                    out << ratio << ',' << ratio * Ny << ',' << p.curvature << ',' << p.moment << '\n';
-                    line.x.push_back(p.curvature);
-                    line.y.push_back(p.moment);
-                }
-                curvature.series.push_back(line);
-            }
+            write_capacity_csv(out, capacity);
+            std::ofstream curves(folder / (spec.name + "_moment_curvature.csv"));
+            write_moment_curvature_csv(curves, curvature);
         }
         if (!vm.count("no-charts")) {
             try {
-                if (series) {
-                    const render::SectionPath path = render::most_loaded_end(*series);
-                    capacity.series.push_back({"path of " + path.where, path.moment, path.axial_force, render::colour::current_point, 2.0f});
-                }
-                render::write_png(render::draw_chart(capacity), (folder / (spec.name + "_capacity.png")).string());
-                render::write_png(render::draw_chart(curvature), (folder / (spec.name + "_moment_curvature.png")).string());
+                std::optional<render::SectionPath> path;
+                if (series) path = render::most_loaded_end(*series);
+                const render::SectionUnits units{model.report.length_unit, model.report.force_unit};
+                render::write_png(render::draw_chart(render::capacity_chart(spec.name, capacity, units, path)),
+                                  (folder / (spec.name + "_capacity.png")).string());
+                render::write_png(render::draw_chart(render::moment_curvature_chart(spec.name, curvature, units)),
+                                  (folder / (spec.name + "_moment_curvature.png")).string());
             } catch (const render::RenderError& e) {
                 std::cerr << "plastica: cannot draw the section charts: " << e.what() << "\n";
                 return bad_input;
             }
         }
-        std::cout << spec.name << ": Ny = " << Ny << ", Mp(0) = " << section.moment_capacity(0.0, 1.0)
+        std::cout << spec.name << ": Ny = " << section.axial_capacity_tension() << ", Mp(0) = " << section.moment_capacity(0.0, 1.0)
                   << ", My(0) = " << section.first_yield_moment(0.0) << "  -> " << (folder / spec.name).string()
                   << "_{capacity,moment_curvature}.csv\n";
         ++written;

@@ -1,0 +1,35 @@
+// What a fibre section can carry, as curves an engineer reads: the N–M capacity (fully plastic
+// moment and first yield over the axial range, both bending signs) and moment–curvature curves
+// at fixed shares of the squash load. `plastica section` writes and draws them.
+#pragma once
+
+#include "section/fibre_section.hpp"
+
+#include <vector>
+
+namespace plastica {
+
+struct CapacityRow {
+    double axial_force = 0.0;
+    double moment_positive = 0.0;     // fully plastic moment, positive bending
+    double moment_negative = 0.0;     // and negative bending (a negative number)
+    double first_yield_moment = 0.0;  // positive bending, 0 where N alone yields a fibre
+};
+
+// `points` rows from the compressive to the tensile squash load.
+std::vector<CapacityRow> capacity_table(const FibreSection& section, int points);
+
+struct MomentCurvatureCurve {
+    double axial_ratio = 0.0; // N / N_y (tension)
+    double axial_force = 0.0;
+    std::vector<MomentCurvaturePoint> points;
+};
+
+// The section's first-yield curvature without axial force: M_y(0) / EI.
+double first_yield_curvature(const FibreSection& section);
+
+// M–κ at N = ratio × N_y for each ratio, from zero to `multiple` × the first-yield curvature.
+std::vector<MomentCurvatureCurve> moment_curvature_family(const FibreSection& section, const std::vector<double>& ratios,
+                                                          double multiple, int points);
+
+} // namespace plastica

@@ -1,0 +1,56 @@
+#include "section_charts.hpp"
+
+#include "palette.hpp"
+#include "result_schema.hpp"
+#include "series_summary.hpp"
+
+namespace plastica::render {
+
+namespace {
+
+std::string unit_of(const char* array, const SectionUnits& units) {
+    return result::unit(result::find(array), units.length, units.force);
+}
+
+} // namespace
+
+ChartFigure capacity_chart(const std::string& section_name, const std::vector<CapacityRow>& rows, const SectionUnits& units,
+                           const std::optional<SectionPath>& path) {
+    ChartFigure chart{section_name + ": N-M capacity of the fibre section",
+                      with_unit("bending moment M", unit_of(result::name::moment_i, units)),
+                      with_unit("axial force N", unit_of(result::name::axial_force, units)), {}, true};
+    // Both signs of the capacity and of first yield; one legend entry each.
+    chart.series = {{"fully plastic Mp(N)", {}, {}, colour::curve_progress, 3.0f},
+                    {"", {}, {}, colour::curve_progress, 3.0f},
+                    {"first yield", {}, {}, colour::hinge_yielding_high, 2.0f},
+                    {"", {}, {}, colour::hinge_yielding_high, 2.0f}};
+    for (const CapacityRow& r : rows) {
+        chart.series[0].x.push_back(r.moment_positive);
+        chart.series[1].x.push_back(r.moment_negative);
+        chart.series[2].x.push_back(r.first_yield_moment);
+        chart.series[3].x.push_back(-r.first_yield_moment);
+        for (ChartSeries& s : chart.series) s.y.push_back(r.axial_force);
+    }
+    if (path) chart.series.push_back({"path of " + path->where, path->moment, path->axial_force, colour::current_point, 2.0f});
+    return chart;
+}
+
+ChartFigure moment_curvature_chart(const std::string& section_name, const std::vector<MomentCurvatureCurve>& curves,
+                                   const SectionUnits& units) {
+    ChartFigure chart{section_name + ": moment-curvature at constant axial force",
+                      with_unit("curvature κ", unit_of(result::name::section_curvature, units)),
+                      with_unit("bending moment M", unit_of(result::name::moment_i, units)), {}, true};
+    const Rgb shades[] = {{31, 90, 180}, {40, 150, 70}, {230, 120, 20}, {150, 30, 170}, {90, 90, 90}};
+    int shade = 0;
+    for (const MomentCurvatureCurve& c : curves) {
+        ChartSeries line{"N/Ny = " + number(c.axial_ratio), {}, {}, shades[shade++ % 5], 2.5f};
+        for (const MomentCurvaturePoint& p : c.points) {
+            line.x.push_back(p.curvature);
+            line.y.push_back(p.moment);
+        }
+        chart.series.push_back(line);
+    }
+    return chart;
+}
+
+} // namespace plastica::render

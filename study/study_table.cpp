@@ -1,0 +1,101 @@
+#include "study_table.hpp"
+
+#include "study_error.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <sstream>
+
+namespace plastica {
+
+namespace {
+
+std::string percent(double relative) {
+    char b[32];
+    if (std::isnan(relative)) return "-";
+    std::snprintf(b, sizeof b, "%.3g %%", 100.0 * relative);
+    return b;
+}
+
+std::string formatted(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string formatted(const char* format, ...) {
+    char b[256];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(b, sizeof b, format, args);
+    va_end(args);
+    return b;
+}
+
+} // namespace
+
+void write_study_csv(std::ostream& out, const StudyReport& report) {
+    out.precision(10);
+    out << "method,parameter,level,seconds,repeats,steps,iterations,status,is_reference,max_error,rms_error";
+    for (double d : report.at) out << ",error_at_" << d;
+    out << "\n";
+    for (const StudyLevel& l : report.levels) {
+        out << l.method << ',' << l.parameter << ',' << l.level << ',' << l.seconds << ',' << l.repeats << ',' << l.steps << ','
+            << l.iterations << ",\"" << l.status << "\"," << l.is_reference << ',' << l.error.max << ',' << l.error.rms;
+        for (double e : l.error.at) out << ',' << e;
+        out << "\n";
+    }
+}
+
+void print_study_table(std::ostream& out, const std::string& scene, const StudyReport& report, bool methods_compared) {
+    out << scene << ": errors against " << report.reference << " (relative to the peak load)\n";
+    if (methods_compared) out << formatted("%-12s ", "plasticity");
+    out << formatted("%-10s %8s %10s %6s %7s %10s %10s", "parameter", "level", "seconds", "steps", "iters", "max", "rms");
+    for (double d : report.at) out << formatted("   at %-6g", d);
+    out << "\n";
+    for (const StudyLevel& l : report.levels) {
+        if (methods_compared) out << formatted("%-12s ", l.method.c_str());
+        out << formatted("%-10s %8g %10.4g %6d %7d %10s %10s", l.parameter.c_str(), l.level, l.seconds, l.steps, l.iterations,
+                         l.is_reference ? "reference" : percent(l.error.max).c_str(),
+                         l.is_reference ? "" : percent(l.error.rms).c_str());
+        for (double e : l.error.at) out << formatted("   %-9s", l.is_reference ? "" : percent(e).c_str());
+        out << "\n";
+    }
+    for (const StudyReport::Order& o : report.observed_order)
+        out << formatted("observed order of convergence in %s%s: %.2f\n", o.parameter.c_str(),
+                         o.method.empty() ? "" : (" with " + o.method).c_str(), o.order);
+}
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& what) {
+    std::vector<double> values;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        std::size_t used = 0;
+        try {
+            values.push_back(std::stod(item, &used));
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != item.size() || !(values.empty() || std::isfinite(values.back())))
+            throw StudyError(what + ": '" + item + "' is not a number");
+    }
+    return values;
+}
+
+void add_variation(StudyOptions& options, const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos) throw StudyError("--vary takes NAME=v1,v2,… (got '" + text + "')");
+    const std::string name = text.substr(0, eq), values = text.substr(eq + 1);
+    if (name == "plasticity") {
+        std::stringstream in(values);
+        for (std::string method; std::getline(in, method, ',');) {
+            if (method != "hinges" && method != "distributed")
+                throw StudyError("--vary plasticity: expected hinges or distributed, got '" + method + "'");
+            options.methods.push_back(method);
+        }
+        if (options.methods.size() < 2) throw StudyError("--vary plasticity needs two methods, e.g. plasticity=hinges,distributed");
+        return;
+    }
+    Ladder l{name, parse_numbers(values, "--vary " + name)};
+    for (double v : l.levels)
+        if (!(v > 0)) throw StudyError("--vary " + l.parameter + ": levels must be positive");
+    options.ladders.push_back(l);
+}
+
+} // namespace plastica
