@@ -1,4 +1,6 @@
 #include "scene_reader.hpp"
+#include "member_geometry.hpp"
+#include "section_shapes.hpp"
 #include "node_index.hpp"
 
 #include "toml_table_reader.hpp"
@@ -15,16 +17,6 @@
 
 namespace plastica {
 
-SectionSpec rectangle_section(double E, double b, double h, int fibres) {
-    SectionSpec s;
-    s.E = E;
-    s.area = b * h;
-    s.inertia = b * h * h * h / 12.0;
-    for (int i = 0; i < fibres; ++i)
-        s.fibres.push_back({b * h / fibres, -h / 2.0 + (i + 0.5) * h / fibres, 0.0});
-    return s;
-}
-
 namespace {
 
 struct Material {
@@ -32,57 +24,6 @@ struct Material {
     double density = 0.0; // mass per unit volume, for self weight
     std::optional<SteelSpec> steel;
 };
-
-// I or H section: flanges split into strips across the width and layers through the
-// thickness (so a residual-stress pattern across the flange is represented), web in layers.
-SectionSpec i_section(TomlTableReader& t, const Material& m) {
-    const double d = t.positive("depth");
-    const double bf = t.positive("flange_width");
-    const double tf = t.positive("flange_thickness");
-    const double tw = t.positive("web_thickness");
-    if (2.0 * tf >= d) t.fail("flange_thickness", "two flanges must be thinner than the depth");
-    if (tw > bf) t.fail("web_thickness", "the web must not be wider than the flanges");
-    const int strips = t.integer_or("flange_strips", 10, 1, 1000);
-    const int layers = t.integer_or("flange_layers", 2, 1, 1000);
-    const int web = t.integer_or("web_fibres", 10, 1, 10000);
-    const double ratio = t.number_or("residual_stress", 0.0);
-    if (ratio < 0.0 || ratio >= 1.0) t.fail("residual_stress", "expected a fraction of fy in [0, 1)");
-    const double hw = d - 2.0 * tf;
-    SectionSpec s;
-    s.E = m.E;
-    s.area = 2.0 * bf * tf + hw * tw;
-    s.inertia = (bf * d * d * d - (bf - tw) * hw * hw * hw) / 12.0;
-    const double fy = m.steel ? m.steel->fy : 0.0;
-    for (int side : {-1, 1})
-        for (int l = 0; l < layers; ++l) {
-            const double y = side * (hw / 2.0 + (l + 0.5) * tf / layers);
-            for (int k = 0; k < strips; ++k) {
-                // ECCS-like linear pattern: compression at the tips, tension at the web,
-                // zero mean over the flange so that the section stays in equilibrium.
-                const double x = -bf / 2.0 + (k + 0.5) * bf / strips;
-                const double sigma = ratio * fy * (1.0 - 4.0 * std::abs(x) / bf);
-                s.fibres.push_back({bf * tf / (strips * layers), y, sigma});
-            }
-        }
-    for (int k = 0; k < web; ++k)
-        s.fibres.push_back({hw * tw / web, -hw / 2.0 + (k + 0.5) * hw / web, 0.0});
-    return s;
-}
-
-SectionSpec hollow_circle(TomlTableReader& t, const Material& m) {
-    const double D = t.positive("diameter");
-    const double th = t.positive("thickness");
-    if (2.0 * th > D) t.fail("thickness", "expected at most half the diameter");
-    const int n = t.integer_or("fibres", 24, 4, 100000);
-    SectionSpec s;
-    s.E = m.E;
-    const double d = D - 2.0 * th;
-    s.area = M_PI * (D * D - d * d) / 4.0;
-    s.inertia = M_PI * (D * D * D * D - d * d * d * d) / 64.0;
-    const double rm = (D - th) / 2.0;
-    for (int k = 0; k < n; ++k) s.fibres.push_back({s.area / n, rm * std::sin(2.0 * M_PI * (k + 0.5) / n), 0.0});
-    return s;
-}
 
 class SceneBuilder {
 public:
@@ -192,22 +133,6 @@ private:
     }
 
     // A key of another shape ('diameter' on a rectangle) would be read by nothing: say whose it is.
-    static void refuse_keys_of_other_shapes(TomlTableReader& r, const std::string& shape) {
-        static const std::map<std::string, std::vector<std::string>> keys = {
-            {"properties", {"A", "I", "fibres"}},
-            {"rectangle", {"b", "h", "fibres"}},
-            {"i", {"depth", "flange_width", "flange_thickness", "web_thickness", "flange_strips", "flange_layers",
-                   "web_fibres", "residual_stress"}},
-            {"hollow_circle", {"diameter", "thickness", "fibres"}},
-            {"fibres", {"fibres"}},
-        };
-        const std::vector<std::string>& own = keys.at(shape);
-        for (const auto& [other, list] : keys)
-            for (const std::string& key : list)
-                if (other != shape && r.has(key) && std::find(own.begin(), own.end(), key) == own.end())
-                    r.fail(key, "a key of shape = \"" + other + "\", not of shape = \"" + shape + "\"");
-    }
-
     void read_sections(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "section");
         for (std::size_t i = 0; i < list.size(); ++i) {
@@ -217,56 +142,8 @@ private:
             const std::string material = r.string("material");
             auto m = materials_.find(material);
             if (m == materials_.end()) r.fail("material", "no [[material]] named '" + material + "'");
-            const std::string shape = r.choice("shape", {"properties", "rectangle", "i", "hollow_circle", "fibres"}, "properties");
-            refuse_keys_of_other_shapes(r, shape);
-            SectionSpec s;
-            if (shape == "properties") {
-                s.E = m->second.E;
-                s.area = r.positive("A");
-                s.inertia = r.positive("I");
-                if (m->second.steel) {
-                    // A and I alone define no fibres: an equivalent rectangle carries them.
-                    const double h = std::sqrt(12.0 * s.inertia / s.area);
-                    const int n = r.integer_or("fibres", 10, 2, 100000);
-                    SectionSpec rect = rectangle_section(s.E, s.area / h, h, n);
-                    s.fibres = rect.fibres;
-                }
-            } else if (shape == "rectangle") {
-                const double b = r.positive("b");
-                const double h = r.positive("h");
-                s = rectangle_section(m->second.E, b, h, r.integer_or("fibres", 10, 1, 100000));
-            } else if (shape == "i") {
-                s = i_section(r, m->second);
-            } else if (shape == "hollow_circle") {
-                s = hollow_circle(r, m->second);
-            } else {
-                s.E = m->second.E;
-                const toml::array* a = r.array("fibres");
-                if (!a || a->empty()) r.fail("fibres", "expected a list of [area, y] or [area, y, residual_stress]");
-                for (const toml::node& f : *a) {
-                    const toml::array* v = f.as_array();
-                    if (!v || v->size() < 2 || v->size() > 3 || !v->is_homogeneous(toml::node_type::none) ||
-                        !std::all_of(v->begin(), v->end(), [](const toml::node& x) { return x.is_number(); }))
-                        throw SceneError(file_, line_of(f), r.qualified("fibres"),
-                                         "expected [area, y] or [area, y, residual_stress] of numbers");
-                    Fibre fib{*(*v)[0].value<double>(), *(*v)[1].value<double>(),
-                              v->size() == 3 ? *(*v)[2].value<double>() : 0.0};
-                    if (!(fib.area > 0.0) || !std::isfinite(fib.y) || !std::isfinite(fib.residual_stress))
-                        throw SceneError(file_, line_of(f), r.qualified("fibres"), "expected a positive fibre area and finite values");
-                    s.fibres.push_back(fib);
-                }
-                double A = 0.0, Sy = 0.0, I = 0.0;
-                for (const Fibre& f : s.fibres) {
-                    A += f.area;
-                    Sy += f.area * f.y;
-                }
-                for (const Fibre& f : s.fibres) I += f.area * (f.y - Sy / A) * (f.y - Sy / A);
-                if (std::abs(Sy) > 1e-9 * A * std::sqrt(I / A))
-                    r.fail("fibres", "fibre y must be measured from the centroid (Σ A·y = 0)");
-                s.area = A;
-                s.inertia = I;
-                if (!(I > 0.0)) r.fail("fibres", "the fibres give no bending stiffness");
-            }
+            const SectionShape& shape = read_section_shape(r);
+            SectionSpec s = shape.build(r, {m->second.E, m->second.steel});
             if (r.has("plastic"))
                 r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
             // Hinges by default for an inelastic material (the seed's method), unless its law
@@ -291,9 +168,9 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
-            r.finish({"name", "material", "shape", "A", "I", "b", "h", "fibres", "depth", "flange_width",
-                      "flange_thickness", "web_thickness", "flange_strips", "flange_layers", "web_fibres",
-                      "residual_stress", "diameter", "thickness", "plasticity", "integration_points"});
+            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "integration_points"};
+            keys.insert(keys.end(), shape.keys.begin(), shape.keys.end());
+            r.finish(keys);
             section_index_[name] = static_cast<int>(model_.sections.size());
             model_.sections.push_back(s);
         }
@@ -350,6 +227,21 @@ private:
         }
     }
 
+    // A generated member: its points become nodes (shared with other members where they meet)
+    // joined by elements, listed under the member's name.
+    void add_member(const std::string& name, const std::vector<Point>& points, int section, TomlTableReader& r) {
+        std::vector<int>& nodes = groups_[name];
+        int prev = add_node(points.front()[0], points.front()[1]);
+        nodes.push_back(prev);
+        for (std::size_t k = 1; k < points.size(); ++k) {
+            const int next = add_node(points[k][0], points[k][1]); // a full circle closes on its first node
+            add_element(prev, next, section, r, "elements");
+            member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
+            if (next != nodes.front()) nodes.push_back(next);
+            prev = next;
+        }
+    }
+
     void read_lines(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "line");
         for (std::size_t i = 0; i < list.size(); ++i) {
@@ -361,17 +253,7 @@ private:
             const int section = section_of(r);
             if (std::hypot(b[0] - a[0], b[1] - a[1]) <= 0.0) r.fail("end", "a line needs a positive length (start and end coincide)");
             size_scale_ = std::max({size_scale_, std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])});
-            std::vector<int>& nodes = groups_[name];
-            int prev = add_node(a[0], a[1]);
-            nodes.push_back(prev);
-            for (int k = 1; k <= n; ++k) {
-                const double t = static_cast<double>(k) / n;
-                const int next = add_node(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]));
-                add_element(prev, next, section, r, "elements");
-                member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
-                nodes.push_back(next);
-                prev = next;
-            }
+            add_member(name, line_points(a, b, n), section, r);
             r.finish({"name", "start", "end", "elements", "section"});
         }
     }
@@ -387,24 +269,10 @@ private:
             const double a1 = r.number("end_angle");
             const int n = r.integer("elements", 1, max_elements);
             const int section = section_of(r);
-            const double sweep = a1 - a0;
-            if (std::abs(sweep) <= 0.0 || std::abs(sweep) > 360.0)
+            if (std::abs(a1 - a0) <= 0.0 || std::abs(a1 - a0) > 360.0)
                 r.fail("end_angle", "expected an arc of more than 0 and at most 360 degrees");
             size_scale_ = std::max({size_scale_, std::abs(c[0]) + R, std::abs(c[1]) + R});
-            std::vector<int>& nodes = groups_[name];
-            auto at = [&](int k) {
-                const double t = (a0 + sweep * k / n) * M_PI / 180.0;
-                return add_node(c[0] + R * std::cos(t), c[1] + R * std::sin(t));
-            };
-            int prev = at(0);
-            nodes.push_back(prev);
-            for (int k = 1; k <= n; ++k) {
-                const int next = at(k); // a full circle closes on its first node
-                add_element(prev, next, section, r, "elements");
-                member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
-                if (next != nodes.front()) nodes.push_back(next);
-                prev = next;
-            }
+            add_member(name, arc_points(c, R, a0, a1, n), section, r);
             r.finish({"name", "center", "radius", "start_angle", "end_angle", "elements", "section"});
         }
     }

@@ -4,6 +4,7 @@
 
 #include "model/model.hpp"
 #include "scene_error.hpp"
+#include "section_shapes.hpp"
 
 #include <toml++/toml.h>
 
@@ -17,8 +18,5 @@ Model read_scene(const std::string& path);
 Model read_scene_text(const std::string& text, const std::string& name_for_errors);
 // A parsed scene (possibly changed by overrides, scene_overrides.hpp) into a Model.
 Model read_scene_table(const toml::table& root, const std::string& name_for_errors);
-
-// Fibre layouts of the generated section shapes (exposed for tests).
-SectionSpec rectangle_section(double E, double b, double h, int fibres);
 
 } // namespace plastica
