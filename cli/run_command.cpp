@@ -21,6 +21,7 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <new>
 #include <optional>
 
 namespace plastica::cli {
@@ -106,10 +107,17 @@ int run_command(const Args& args) {
     // The lean plastica has no drawing linked in: a run that draws is plastica-draw's, whole.
     const bool draws = !vm.count("no-render") && !vm.count("curves-only");
     if (draws && !can_draw()) return hand_over_to_drawing("run", args);
-    PathFollowing analysis(model);
-    if (const std::string m = analysis.initial_mechanism(); !m.empty()) {
-        std::cerr << "plastica: " << scene_file << ": " << m << "\n";
-        return bad_input;
+    std::optional<PathFollowing> analysis;
+    try {
+        analysis.emplace(model);
+        if (const std::string m = analysis->initial_mechanism(); !m.empty()) {
+            std::cerr << "plastica: " << scene_file << ": " << m << "\n";
+            return bad_input;
+        }
+    } catch (const std::bad_alloc&) {
+        std::cerr << "plastica: " << scene_file << ": out of memory while setting up the model of " << model.elements.size()
+                  << " elements and " << model.nodes.size() << " nodes: it needs more memory than this process may have\n";
+        return stopped_early;
     }
     const std::string folder = vm.count("output") ? vm["output"].as<std::string>() : default_output_folder(model.name);
     try {
@@ -170,7 +178,7 @@ int run_command(const Args& args) {
             }
         track(r);
     };
-    report.summary = analysis.run({write_step}, control);
+    report.summary = analysis->run({write_step}, control);
     progress.finish();
     if (series) try {
             series->finish();

@@ -312,6 +312,28 @@ TEST_CASE("plastica compare --region compares one part of each picture", "[cli][
     CHECK_THAT(bad.output, Catch::Contains("--region takes x0,y0,x1,y1"));
 }
 
+TEST_CASE("A model larger than the memory the process may have stops with exit 3 and says so", "[cli]") {
+#ifdef PLASTICA_SANITIZED
+    WARN("not under the sanitizers: their shadow memory needs more address space than the limit leaves");
+    return;
+#else
+    // 200 000 elements need about 0.5 GB; the process may have 0.4 GB (virtual).
+    const fs::path out = scratch("out_of_memory");
+    const std::string cmd = "sh -c \"ulimit -v 400000; " + std::string(PLASTICA_BINARY) + " run " + model("cantilever_tip_load.toml") +
+                            " --set 'line[1].elements=200000' --curves-only -q -o " + out.string() + "\" > " + out.string() +
+                            ".log 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::ifstream log(out.string() + ".log");
+    std::stringstream message;
+    message << log.rdbuf();
+    CAPTURE(message.str());
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 3);
+    CHECK_THAT(message.str(), Catch::Contains("out of memory") && Catch::Contains("200000 elements"));
+    CHECK_THAT(message.str(), !Catch::Contains("terminate called"));
+#endif
+}
+
 TEST_CASE("plastica study and plastica stability write their tables and charts", "[cli][study]") {
     const fs::path out = scratch("study");
     const Result study = command("study " + model("cantilever_tip_load.toml") + " --vary elements=4,8,16 -o " + out.string());

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <sstream>
 
 namespace plastica {
@@ -152,9 +153,24 @@ PathFollowing::RoundOffFloor PathFollowing::round_off_floor() const {
 }
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {
+    RunSummary summary;
+    try {
+        return run_steps(observers, control, summary);
+    } catch (const std::bad_alloc&) {
+        summary.status = RunStatus::out_of_memory;
+        std::ostringstream why;
+        why << "out of memory in step " << step_ + 1 << ": the model's " << system_.free_count()
+            << " unknowns need more memory than this process may have";
+        summary.reason = why.str();
+        summary.steps = step_;
+        return summary;
+    }
+}
+
+RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, const RunControl& control,
+                                    RunSummary& summary) {
     const auto start = std::chrono::steady_clock::now();
     const AnalysisSpec& a = analysis_;
-    RunSummary summary;
     // An observer that cannot take a step (its disk is full) ends the run: the step is not
     // counted, and the run's outputs end with the step before it.
     auto publish = [&](const StepResult& r) {

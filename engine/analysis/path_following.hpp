@@ -48,6 +48,8 @@ class PathFollowing {
 public:
     explicit PathFollowing(const Model& model);
 
+    // Runs to the target or a stop; a model larger than the memory the process may have stops
+    // with out_of_memory, its converged steps published.
     RunSummary run(const std::vector<StepObserver>& observers, const RunControl& control = {});
     // Empty when the unloaded structure is stable; otherwise names the DOF that is free
     // (a mechanism before loading, e.g. a missing support).
@@ -57,6 +59,7 @@ public:
     const std::vector<IterationTrace>& trace() const { return trace_; }
 
 private:
+    RunSummary run_steps(const std::vector<StepObserver>& observers, const RunControl& control, RunSummary& summary);
     NewtonResult attempt_increment(double h, const RunControl& control);
     double next_increment(double h, double used, const NewtonResult& outcome) const;
     bool tangent_shows_limit();

@@ -12,6 +12,7 @@ const char* to_string(RunStatus status) {
     case RunStatus::step_limit: return "step_limit";
     case RunStatus::penetration: return "penetration";
     case RunStatus::output_failed: return "output_failed";
+    case RunStatus::out_of_memory: return "out_of_memory";
     }
     return "unknown";
 }

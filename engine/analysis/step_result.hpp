@@ -51,7 +51,7 @@ struct StepResult {
 };
 
 // output_failed: an observer could not take a step (a full disk); the steps before it stand.
-enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit, penetration, output_failed };
+enum class RunStatus { completed, no_convergence, limit_load, non_finite, interrupted, step_limit, penetration, output_failed, out_of_memory };
 
 struct RunSummary {
     RunStatus status = RunStatus::completed;
