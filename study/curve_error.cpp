@@ -46,6 +46,7 @@ CurveError curve_error(const Curve& curve, const Curve& reference, const std::ve
         sum += r * r;
         ++n;
     }
+    if (n == 0) e.max = std::numeric_limits<double>::quiet_NaN(); // no displacement in common
     e.rms = n ? std::sqrt(sum / n) : std::numeric_limits<double>::quiet_NaN();
     for (double d : at) {
         const double p = load_at(curve, d), q = load_at(reference, d);

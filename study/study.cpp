@@ -82,6 +82,19 @@ double slope(const std::vector<double>& h, const std::vector<double>& error) {
 
 } // namespace
 
+namespace {
+
+// "displacements a … b" of a curve.
+std::string span_text(const Curve& c) {
+    std::ostringstream s;
+    if (c.displacement.empty()) return "no points";
+    const auto [lo, hi] = std::minmax_element(c.displacement.begin(), c.displacement.end());
+    s << "displacements " << *lo + 0.0 << " … " << *hi + 0.0; // + 0.0: no "-0"
+    return s.str();
+}
+
+} // namespace
+
 StudyReport run_study(const StudyOptions& options) {
     StudyReport report;
     const Model base = read_scene(options.scene);
@@ -138,6 +151,13 @@ StudyReport run_study(const StudyOptions& options) {
                 l.status = run.summary.reason;
                 l.is_reference = !fixed_reference && m + 1 == methods.size() && i == finest;
                 l.error = curve_error(run.curve, reference, report.at);
+                if (std::isnan(l.error.max)) {
+                    std::ostringstream why;
+                    why << ladder.parameter << " = " << l.level << ": its curve has no displacement in common with "
+                        << (fixed_reference ? "the reference" : "the finest level") << " (" << span_text(run.curve) << " against "
+                        << span_text(reference) << "): there is no error to measure";
+                    throw StudyError(why.str());
+                }
                 if (!l.is_reference) {
                     hs.push_back(step_size(ladder.parameter, l.level));
                     errors.push_back(l.error.max);

@@ -12,6 +12,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 using namespace plastica;
 
@@ -142,6 +144,18 @@ TEST_CASE("A scene without a closed form refuses --reference exact", "[study]") 
     o.ladders = {{"elements", {10, 20}}};
     o.reference = "exact";
     CHECK_THROWS_AS(run_study(o), StudyError);
+}
+
+TEST_CASE("A study whose curves share no displacement with the reference says so, no 0 % error", "[study]") {
+    const std::string far = (std::filesystem::temp_directory_path() / "plastica_far_reference.csv").string();
+    std::ofstream(far) << "displacement,load\n500,1\n600,2\n";
+    StudyOptions o;
+    o.scene = model("ring_elastic");
+    o.ladders = {{"elements", {10, 20}}};
+    o.reference = far;
+    o.min_seconds = 0.0;
+    CHECK_THROWS_WITH(run_study(o), Catch::Contains("elements = 10: its curve has no displacement in common with the reference") &&
+                                        Catch::Contains("displacements 500 … 600"));
 }
 
 namespace {
