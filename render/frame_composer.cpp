@@ -39,6 +39,15 @@ std::string scene_heading(const SeriesSummary& s) {
     return s.title.empty() ? s.scene : s.title + "  (" + s.scene + ")";
 }
 
+// The load axis' title, saying where it is cut (see SeriesSummary::load_axis_cut).
+std::string load_axis_title(const SeriesSummary& s) {
+    const std::string title = with_unit(s.load_label, s.load_unit);
+    if (!(s.load_axis_cut[1] > s.load_axis_cut[0])) return title;
+    char note[96];
+    std::snprintf(note, sizeof note, " (axis cut: rises to %.3g on the base)", s.largest_load);
+    return title + note;
+}
+
 } // namespace
 
 std::string number(double value) {
@@ -50,7 +59,7 @@ std::string number(double value) {
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
                              const LayerChoice& layers, double text_boost)
     : summary_(summary), window_(width, height),
-      chart_(with_unit(summary.displacement_label, summary.displacement_unit), with_unit(summary.load_label, summary.load_unit),
+      chart_(with_unit(summary.displacement_label, summary.displacement_unit), load_axis_title(summary),
              text_boost * text_scale(width, height)) {
     const double s = text_boost * text_scale(width, height);
     const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
@@ -77,6 +86,7 @@ FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* 
     double x0, x1, y0, y1;
     padded_range(xs, x0, x1);
     padded_range(ys, y0, y1);
+    if (summary.load_axis_cut[1] > summary.load_axis_cut[0]) y0 = summary.load_axis_cut[0], y1 = summary.load_axis_cut[1];
     chart_.set_ranges(x0, x1, y0, y1);
     chart_.place_in(chart_area_);
 
@@ -142,6 +152,7 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
             all_y.push_back(0.0);
             padded_range(all_x, x0, x1);
             padded_range(all_y, y0, y1);
+            if (f.load_axis_cut[1] > f.load_axis_cut[0]) y0 = f.load_axis_cut[0], y1 = f.load_axis_cut[1];
         } else {
             // The data's own span, 5 % of room on either side (a scatter far from the origin).
             auto tight = [](const std::vector<double>& v, double& lo, double& hi) {
@@ -170,7 +181,8 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     ChartFigure f;
     f.title = main.load_label + " against " + main.displacement_label + ": " + scene_heading(main);
     f.x_label = with_unit(main.displacement_label, main.displacement_unit);
-    f.y_label = with_unit(main.load_label, main.load_unit);
+    f.y_label = load_axis_title(main);
+    std::copy(main.load_axis_cut, main.load_axis_cut + 2, f.load_axis_cut);
     f.width = width;
     f.height = height;
     // The main run in the progress blue, drawn last so it stays on top; the others in colours
@@ -186,9 +198,11 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     for (std::size_t k = 0; k < references.size(); ++k)
         f.series.push_back({references[k].label, references[k].displacement, references[k].load, marks[k % 4], 9.0f, true});
     // Events of the main run that explain the shape of its curve.
+    const bool cut = main.load_axis_cut[1] > main.load_axis_cut[0];
     auto mark = [&](const char* label, Rgb colour, auto happened) {
         for (const CurvePoint& c : main.curve)
             if (happened(c)) {
+                if (cut && (c.load < main.load_axis_cut[0] || c.load > main.load_axis_cut[1])) return false; // off the chart
                 f.series.push_back({label, {c.displacement}, {c.load}, colour, 12.0f, true});
                 return true;
             }

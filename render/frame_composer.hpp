@@ -54,6 +54,7 @@ struct ChartFigure {
     bool legend = false;
     bool axes_through_zero = true; // ranges include the origin
     bool log_scale = false;        // both axes logarithmic (error against time)
+    double load_axis_cut[2] = {0.0, 0.0}; // the vertical axis' range, when set (data beyond it is cut)
     int width = 1280, height = 720;
 };
 vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& figure);

@@ -216,6 +216,24 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             s.any_failed = s.any_failed || count_state(st, result::HingeCode::failed) > 0;
         }
     }
+    // Landing: the first step with more nodes in contact than at the start. Before it the
+    // structure carries the load alone; a load 10 times that peak afterwards is the base's.
+    if (s.unilateral && !s.curve.empty()) {
+        double low = 0.0, high = 0.0, largest = 0.0;
+        bool landed = false;
+        for (const CurvePoint& c : s.curve) {
+            landed = landed || c.contact_count > s.curve.front().contact_count;
+            if (!landed) low = std::min(low, c.load), high = std::max(high, c.load);
+            largest = std::max(largest, std::abs(c.load));
+        }
+        const double before = std::max(high, -low);
+        if (landed && before > 0.0 && largest > 10.0 * before) {
+            // The structure's own range, and as much again above it for the landing.
+            s.load_axis_cut[0] = low - 0.05 * (2.0 * before - low);
+            s.load_axis_cut[1] = 2.0 * before;
+            s.largest_load = largest;
+        }
+    }
     if (s.mirrored) {
         const double lo = std::min(b[0], 2 * s.mirror_x - b[1]), hi = std::max(b[1], 2 * s.mirror_x - b[0]);
         b[0] = lo;

@@ -52,6 +52,12 @@ struct SeriesSummary {
     };
     NodalArrows loads, reactions;
     double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
+    // A structure that lands on a base after its own response (an arch snapping onto a floor)
+    // is then held by the base's penalty, and its load climbs by orders of magnitude; charts
+    // show the load axis over this range (both 0: the whole run) so that the structure's own
+    // response stays in view.
+    double load_axis_cut[2] = {0.0, 0.0};
+    double largest_load = 0.0;    // the largest |load| of the run, said where the axis is cut
     // Units the scene names (empty: none): of lengths and forces, and of the reported load and
     // displacement.
     std::string length_unit, force_unit, load_unit, displacement_unit;

@@ -19,6 +19,7 @@
 #include <vtkRibbonFilter.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
+#include <vtkTextRenderer.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform.h>
 #include <vtkUnstructuredGrid.h>
@@ -159,6 +160,21 @@ void StructureView::add_colour_bar(double text_scale) {
     renderer_->AddViewProp(colour_bar_);
 }
 
+namespace {
+
+// A smaller font until the text is no wider than `room` pixels: the legend column of a small
+// picture (a contact sheet's tile) would otherwise cut its notes off.
+void fit_width(vtkTextProperty* property, const std::string& text, double room) {
+    vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
+    for (int size = property->GetFontSize(); size > 5; property->SetFontSize(--size)) {
+        int box[4];
+        if (!measure || !measure->GetBoundingBox(property, text, box, 72)) return;
+        if (box[1] - box[0] <= room) return;
+    }
+}
+
+} // namespace
+
 void StructureView::add_legend(double text_scale) {
     const double s = text_scale;
     const double x = viewport_.width_px * (1.0 - side_column + 0.03);
@@ -169,6 +185,7 @@ void StructureView::add_legend(double text_scale) {
         style_text(text->GetTextProperty(), size);
         if (top) text->GetTextProperty()->SetVerticalJustificationToTop();
         else text->GetTextProperty()->SetVerticalJustificationToCentered();
+        fit_width(text->GetTextProperty(), content, viewport_.width_px - at_x - 2.0);
         text->SetPosition(at_x, at_y);
         notes_.push_back(text);
     };

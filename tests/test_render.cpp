@@ -111,6 +111,37 @@ TEST_CASE("A distributed-plasticity ring is shaded by the yielded share, without
     CHECK(count_pixels(first, yielded_through, 0, structure_right, band_bottom, 1) == 0);
 }
 
+TEST_CASE("Charts keep a structure's own response in view when a base takes over the load", "[render]") {
+    unsetenv("DISPLAY");
+    // The shallow arch snaps through (peak near 172) and lands on the floor, whose penalty
+    // then carries 1.5e6: the load axis spans the arch's own range and says where it is cut.
+    const fs::path arch = solved_series("gallery/arch_on_floor", 1, "arch_cut");
+    const SeriesSummary landed = summarise(open_series(arch.string()), "", 1.0);
+    double before = 0.0, low = 0.0;
+    for (const CurvePoint& c : landed.curve) {
+        if (c.contact_count > 0) break;
+        before = std::max(before, c.load), low = std::min(low, c.load);
+    }
+    CHECK(before == Approx(172.5).margin(1.0));
+    CHECK(low < 0.0); // past the snap the arch pulls back before it lands
+    CHECK(landed.load_axis_cut[1] == Approx(2.0 * before));
+    CHECK(landed.load_axis_cut[0] < low);
+    CHECK(landed.largest_load > 1e6);
+    RenderOptions o = small(arch / "pictures", 1000);
+    render_series(arch.string(), o);
+    // The chart's curve climbs to the arch's peak and falls past the snap: its blue (drawn
+    // thin and blended at this size) fills the chart's middle, where with the whole range
+    // (to 1.5e6) only the vertical landing line would stand.
+    auto chart = read_png((arch / "pictures" / "chart.png").string());
+    const auto blue = [](Pixel p) { return p.b > p.r + 60 && p.b > p.g + 40; };
+    CHECK(count_pixels(chart, blue, 0.1, 0.7, 0.3, 0.75) > 200);
+    // A ring whose contact spreads with a modest rise of the load keeps its whole range.
+    const fs::path ring = solved_series("ring_elastic", 50, "ring_uncut");
+    const SeriesSummary spread = summarise(open_series(ring.string()), "", 1.0);
+    CHECK(spread.load_axis_cut[0] == 0.0);
+    CHECK(spread.load_axis_cut[1] == 0.0);
+}
+
 TEST_CASE("Supports and loads are drawn where the scene has them, and --hide leaves them out", "[render]") {
     unsetenv("DISPLAY");
     // The portal frame: two clamped feet at the bottom, gravity loads on the column heads and a
