@@ -1,4 +1,5 @@
 #include "frame_composer.hpp"
+#include "figure_text.hpp"
 #include "layer_list.hpp"
 #include "text_and_mirror.hpp"
 
@@ -16,45 +17,13 @@ namespace plastica::render {
 
 namespace {
 
-// The layout, in fractions of the window: a title band on top, the structure on the left.
-constexpr double band = 0.11;
+// The structure on the left of a frame, the chart on its right.
 constexpr double split = 0.57;
-
-void style(vtkTextActor* text, double size, bool bold) { style_text(text->GetTextProperty(), size, bold); }
-
-std::vector<double> column(const std::vector<CurvePoint>& curve, std::size_t count, bool load) {
-    std::vector<double> v;
-    for (std::size_t i = 0; i < count && i < curve.size(); ++i) v.push_back(load ? curve[i].load : curve[i].displacement);
-    return v;
-}
-
-// Text and line sizes are set for 1280 × 720 and scale with the picture; a narrower picture
-// scales by its width so that the legend column still holds its text.
-double text_scale(int width, int height) { return std::min(height / 720.0, width / 1280.0); }
 
 // " kN" after a value, or nothing.
 std::string unit_after(const std::string& unit) { return unit.empty() ? "" : " " + unit; }
 
-std::string scene_heading(const SeriesSummary& s) {
-    return s.title.empty() ? s.scene : s.title + "  (" + s.scene + ")";
-}
-
-// The load axis' title, saying where it is cut (see SeriesSummary::load_axis_cut).
-std::string load_axis_title(const SeriesSummary& s) {
-    const std::string title = with_unit(s.load_label, s.load_unit);
-    if (!(s.load_axis_cut[1] > s.load_axis_cut[0])) return title;
-    char note[96];
-    std::snprintf(note, sizeof note, " (axis cut: rises to %.3g on the base)", s.largest_load);
-    return title + note;
-}
-
 } // namespace
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", value == 0.0 ? 0.0 : value); // no "-0"
-    return text;
-}
 
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
                              const LayerChoice& layers, double text_boost)
@@ -78,8 +47,8 @@ FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* 
 
     chart_area_->SetViewport(split, 0.0, 1.0, 1.0 - band);
     chart_area_->SetBackground(1, 1, 1);
-    const auto xs = column(summary.curve, summary.curve.size(), false);
-    const auto ys = column(summary.curve, summary.curve.size(), true);
+    const auto xs = curve_column(summary.curve, summary.curve.size(), false);
+    const auto ys = curve_column(summary.curve, summary.curve.size(), true);
     chart_.add({"", xs, ys, colour::curve_full, 2.0f});
     progress_line_ = chart_.add({"", {}, {}, colour::curve_progress, 3.0f});
     current_point_ = chart_.add({"", {}, {}, colour::current_point, 11.0f, true});
@@ -107,112 +76,9 @@ vtkSmartPointer<vtkImageData> FrameComposer::draw(vtkUnstructuredGrid* step, std
     structure_->show(step);
     // A line needs two points; the first step is the marker alone.
     const std::size_t shown = index == 0 ? 0 : index + 1;
-    chart_.replace(progress_line_, column(summary_.curve, shown, false), column(summary_.curve, shown, true));
+    chart_.replace(progress_line_, curve_column(summary_.curve, shown, false), curve_column(summary_.curve, shown, true));
     chart_.replace(current_point_, {c.displacement}, {c.load});
     return window_.capture();
-}
-
-vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
-    const double s = text_scale(f.width, f.height);
-    OffscreenWindow window(f.width, f.height);
-    vtkNew<vtkRenderer> band_area, chart_area;
-    band_area->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
-    band_area->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());
-    chart_area->SetViewport(0.0, 0.0, 1.0, 1.0 - band);
-    chart_area->SetBackground(1, 1, 1);
-    vtkNew<vtkTextActor> title;
-    title->SetInput(f.title.c_str());
-    style(title, 22 * s, true);
-    title->SetPosition(16 * s, 0.11 * f.height * 0.35);
-    band_area->AddViewProp(title);
-
-    LoadChart chart(f.x_label, f.y_label, s);
-    std::vector<double> all_x, all_y;
-    for (const ChartSeries& series : f.series) {
-        all_x.insert(all_x.end(), series.x.begin(), series.x.end());
-        all_y.insert(all_y.end(), series.y.begin(), series.y.end());
-        chart.add(series);
-    }
-    double x0, x1, y0, y1;
-    if (f.log_scale) {
-        // A factor of two of room around the positive data, on both axes.
-        auto span = [](const std::vector<double>& v, double& lo, double& hi) {
-            lo = 1e300, hi = 0;
-            for (double x : v)
-                if (x > 0 && std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
-            if (hi <= 0) lo = 1, hi = 10;
-            lo /= 2, hi *= 2;
-        };
-        span(all_x, x0, x1);
-        span(all_y, y0, y1);
-        chart.set_log_scale();
-    } else {
-        if (f.axes_through_zero) {
-            all_x.push_back(0.0);
-            all_y.push_back(0.0);
-            padded_range(all_x, x0, x1);
-            padded_range(all_y, y0, y1);
-            if (f.load_axis_cut[1] > f.load_axis_cut[0]) y0 = f.load_axis_cut[0], y1 = f.load_axis_cut[1];
-        } else {
-            // The data's own span, 5 % of room on either side (a scatter far from the origin).
-            auto tight = [](const std::vector<double>& v, double& lo, double& hi) {
-                lo = INFINITY, hi = -INFINITY;
-                for (double x : v)
-                    if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
-                if (!(hi >= lo)) lo = 0, hi = 1;
-                const double pad = 0.05 * (hi > lo ? hi - lo : std::max(std::abs(hi), 1.0));
-                lo -= pad, hi += pad;
-            };
-            tight(all_x, x0, x1);
-            tight(all_y, y0, y1);
-        }
-    }
-    chart.set_ranges(x0, x1, y0, y1);
-    chart.show_legend(f.legend);
-    chart.place_in(chart_area);
-    window.add(band_area);
-    window.add(chart_area);
-    return window.capture();
-}
-
-vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height,
-                                               const std::vector<ReferencePoints>& references) {
-    const SeriesSummary& main = *runs.front();
-    ChartFigure f;
-    f.title = main.load_label + " against " + main.displacement_label + ": " + scene_heading(main);
-    f.x_label = with_unit(main.displacement_label, main.displacement_unit);
-    f.y_label = load_axis_title(main);
-    std::copy(main.load_axis_cut, main.load_axis_cut + 2, f.load_axis_cut);
-    f.width = width;
-    f.height = height;
-    // The main run in the progress blue, drawn last so it stays on top; the others in colours
-    // that no marker uses.
-    const Rgb others[] = {{105, 105, 105}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
-    for (std::size_t k = runs.size(); k-- > 0;) {
-        const Rgb c = k == 0 ? colour::curve_progress : others[(k - 1) % 4];
-        f.series.push_back({runs.size() > 1 ? runs[k]->scene : "", column(runs[k]->curve, runs[k]->curve.size(), false),
-                            column(runs[k]->curve, runs[k]->curve.size(), true), c, k == 0 ? 3.0f : 2.0f});
-    }
-    // Reference points as open markers in colours no run or event uses.
-    const Rgb marks[] = {{0, 0, 0}, {120, 60, 160}, {190, 120, 0}, {0, 110, 110}};
-    for (std::size_t k = 0; k < references.size(); ++k)
-        f.series.push_back({references[k].label, references[k].displacement, references[k].load, marks[k % 4], 9.0f, true});
-    // Events of the main run that explain the shape of its curve.
-    const bool cut = main.load_axis_cut[1] > main.load_axis_cut[0];
-    auto mark = [&](const char* label, Rgb colour, auto happened) {
-        for (const CurvePoint& c : main.curve)
-            if (happened(c)) {
-                if (cut && (c.load < main.load_axis_cut[0] || c.load > main.load_axis_cut[1])) return false; // off the chart
-                f.series.push_back({label, {c.displacement}, {c.load}, colour, 12.0f, true});
-                return true;
-            }
-        return false;
-    };
-    bool marked = false;
-    if (main.inelastic) marked |= mark("first yield", colour::hinge_yielding_high, [](const CurvePoint& c) { return c.hinge_count > 0; });
-    if (main.unilateral) marked |= mark("contact spreads", colour::contact_force, [](const CurvePoint& c) { return c.contact_count > 1; });
-    f.legend = runs.size() > 1 || marked || !references.empty();
-    return draw_chart(f);
 }
 
 } // namespace plastica::render

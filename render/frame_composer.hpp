@@ -8,7 +8,6 @@
 
 #include "load_chart.hpp"
 #include "offscreen_window.hpp"
-#include "reference_points.hpp"
 #include "series_summary.hpp"
 #include "structure_view.hpp"
 
@@ -46,26 +45,5 @@ private:
     LoadChart chart_;
     int progress_line_ = 0, current_point_ = 0;
 };
-
-// A chart on its own: a title band over a chart of the given series.
-struct ChartFigure {
-    std::string title, x_label, y_label;
-    std::vector<ChartSeries> series;
-    bool legend = false;
-    bool axes_through_zero = true; // ranges include the origin
-    bool log_scale = false;        // both axes logarithmic (error against time)
-    double load_axis_cut[2] = {0.0, 0.0}; // the vertical axis' range, when set (data beyond it is cut)
-    int width = 1280, height = 720;
-};
-vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& figure);
-
-// The whole load–displacement curve of one or more runs (the first is the main one, its first
-// yield and contact spreading marked), with a legend when there is more than one run.
-// Reference points (published or measured) are drawn as markers, each set in the legend.
-vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height,
-                                               const std::vector<ReferencePoints>& references = {});
-
-// "%.4g" without trailing noise.
-std::string number(double value);
 
 } // namespace plastica::render

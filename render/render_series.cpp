@@ -3,6 +3,7 @@
 #include "shapes_figure.hpp"
 #include "animation.hpp"
 #include "contact_sheet.hpp"
+#include "charts.hpp"
 #include "frame_composer.hpp"
 #include "png_file.hpp"
 #include "render_error.hpp"

@@ -1,5 +1,6 @@
 #include "section_charts.hpp"
 
+#include "figure_text.hpp"
 #include "palette.hpp"
 #include "result_schema.hpp"
 #include "series_summary.hpp"

@@ -3,7 +3,7 @@
 // moment–curvature family.
 #pragma once
 
-#include "frame_composer.hpp"
+#include "charts.hpp"
 #include "section/section_curves.hpp"
 #include "section_path.hpp"
 

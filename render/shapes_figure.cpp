@@ -1,7 +1,7 @@
 #include "shapes_figure.hpp"
 
 #include "flat_marks.hpp"
-#include "frame_composer.hpp"
+#include "figure_text.hpp"
 #include "offscreen_window.hpp"
 #include "render_error.hpp"
 #include "ribbon.hpp"
@@ -28,10 +28,7 @@ namespace plastica::render {
 
 namespace {
 
-constexpr double band = 0.11;   // title band, as in the frames
 constexpr double legend = 0.3;  // share of each panel kept for its legend
-
-void style(vtkTextActor* text, double size, bool bold) { style_text(text->GetTextProperty(), size, bold); }
 
 // The index of the step whose control displacement is nearest d (first crossing).
 std::size_t nearest_step(const SeriesSummary& s, double d) {

@@ -1,5 +1,7 @@
 #include "study_chart.hpp"
 
+#include "figure_text.hpp"
+
 #include <cmath>
 
 namespace plastica::render {

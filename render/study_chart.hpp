@@ -2,7 +2,7 @@
 // time, log–log, one line per method and parameter with its levels and observed order.
 #pragma once
 
-#include "frame_composer.hpp"
+#include "charts.hpp"
 #include "study.hpp"
 
 #include <string>

@@ -1,6 +1,7 @@
 #include "sweep_charts.hpp"
 
-#include "frame_composer.hpp"
+#include "charts.hpp"
+#include "figure_text.hpp"
 #include "png_file.hpp"
 
 #include <vtkImageData.h>
