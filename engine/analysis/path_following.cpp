@@ -246,6 +246,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             lambda_ = lambda_saved;
             system_.revert();
             ++summary.cut_steps;
+            steps_since_cut_ = 0;
             h = 0.5 * step_h;
             if (!giving_up) continue;
             summary.status = RunStatus::no_convergence;
@@ -290,7 +291,10 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             break;
         }
 
+        ++steps_since_cut_;
+        const double before = std::abs(h);
         h = next_increment(h, step_h, outcome);
+        if (std::abs(h) > before) steps_since_cut_ = 0;
         if (target_reached()) {
             if (stage_ < model_.stages.size()) {
                 h = begin_stage(stage_);
@@ -350,8 +354,10 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
         if (outcome.contraction <= 0.1) factor = std::max(factor, 1.0);
         next = std::abs(used) * std::clamp(factor, 0.5, 2.0);
         if (std::abs(used) < std::abs(h) && factor >= 1.0) next = std::max(next, std::abs(h)); // a landing step
-    } else if (next < std::abs(a.initial_increment)) {
-        next = std::min(2.0 * next, std::abs(a.initial_increment)); // recover after a cut
+    } else if (next < std::abs(a.initial_increment) && steps_since_cut_ >= 3) {
+        // Recover after a cut, once three steps have passed at the smaller increment: where
+        // the full increment failed, the next one tried at once mostly fails as well.
+        next = std::min(2.0 * next, std::abs(a.initial_increment));
     }
     if (a.max_increment > 0.0) next = std::min(next, a.max_increment);
     return sign * next;

@@ -90,6 +90,7 @@ private:
     Eigen::VectorXd previous_increment_; // free DOFs, last converged Δu
     double lambda_ = 0.0;
     double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference
+    int steps_since_cut_ = 0;  // converged steps at the increment a cut left (fixed increments)
     double arc_length_ = 0.0;
     double last_residual_ = 0.0;
     int step_ = 0;
