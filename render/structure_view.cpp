@@ -24,6 +24,8 @@
 #include <vtkTransform.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <sstream>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -162,32 +164,65 @@ void StructureView::add_colour_bar(double text_scale) {
 
 namespace {
 
-// A smaller font until the text is no wider than `room` pixels: the legend column of a small
-// picture (a contact sheet's tile) would otherwise cut its notes off.
-void fit_width(vtkTextProperty* property, const std::string& text, double room) {
+double text_width(vtkTextProperty* property, const std::string& text) {
+    int box[4];
     vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
-    for (int size = property->GetFontSize(); size > 5; property->SetFontSize(--size)) {
-        int box[4];
-        if (!measure || !measure->GetBoundingBox(property, text, box, 72)) return;
-        if (box[1] - box[0] <= room) return;
+    return measure && measure->GetBoundingBox(property, text, box, 72) ? box[1] - box[0] : 0.0;
+}
+
+// The text broken at spaces into lines no wider than `room` pixels, and then, where one word
+// alone is wider, a smaller font: the legend column of a small picture (a contact sheet's tile)
+// would otherwise cut its notes off.
+std::string fit_width(vtkTextProperty* property, const std::string& text, double room) {
+    std::string wrapped, line;
+    std::istringstream lines(text);
+    for (std::string given; std::getline(lines, given);) {
+        std::istringstream words(given);
+        line.clear();
+        for (std::string word; words >> word;) {
+            const std::string longer = line.empty() ? word : line + " " + word;
+            if (!line.empty() && text_width(property, longer) > room) {
+                wrapped += line + "\n";
+                line = word;
+            } else {
+                line = longer;
+            }
+        }
+        wrapped += line + "\n";
     }
+    if (!wrapped.empty()) wrapped.pop_back();
+    for (int size = property->GetFontSize(); size > 5 && text_width(property, wrapped) > room; property->SetFontSize(--size)) {
+    }
+    return wrapped;
 }
 
 } // namespace
 
 void StructureView::add_legend(double text_scale) {
-    const double s = text_scale;
+    // Smaller, where the entries of a small picture (a contact sheet's tile) would run off its foot.
+    for (double s = text_scale;; s *= 0.9) {
+        legend_marks_.clear();
+        notes_.clear();
+        if (lay_out_legend(s) >= 0.0 || s < 0.75 * text_scale) break;
+    }
+    renderer_->AddViewProp(legend_marks_.prop());
+    for (auto& n : notes_) renderer_->AddViewProp(n);
+}
+
+double StructureView::lay_out_legend(double s) {
     const double x = viewport_.width_px * (1.0 - side_column + 0.03);
     double y = viewport_.height_px * 0.42;
+    // Returns the number of lines the text took.
     auto add_text = [&](const std::string& content, double size, double at_x, double at_y, bool top) {
         auto text = vtkSmartPointer<vtkTextActor>::New();
-        text->SetInput(content.c_str());
         style_text(text->GetTextProperty(), size);
         if (top) text->GetTextProperty()->SetVerticalJustificationToTop();
         else text->GetTextProperty()->SetVerticalJustificationToCentered();
-        fit_width(text->GetTextProperty(), content, viewport_.width_px - at_x - 2.0);
+        const std::string fitted = fit_width(text->GetTextProperty(), content, viewport_.width_px - at_x - 2.0);
+        text->SetInput(fitted.c_str());
         text->SetPosition(at_x, at_y);
         notes_.push_back(text);
+        return 1 + static_cast<int>(std::count(fitted.begin(), fitted.end(), '\n'));
     };
     for (const auto& layer : layers_) {
         for (const LegendEntry& e : layer->legend()) {
@@ -221,8 +256,8 @@ void StructureView::add_legend(double text_scale) {
             y -= 26 * s;
         }
         if (const std::string note = layer->note(); !note.empty()) {
-            add_text(note, 12 * s, x + 26 * s, y + 8 * s, true);
-            y -= 34 * s;
+            const int lines = add_text(note, 12 * s, x + 26 * s, y + 8 * s, true);
+            y -= (14 * lines + 6) * s;
         }
     }
     if (summary_.magnify != 1.0) {
@@ -230,11 +265,12 @@ void StructureView::add_legend(double text_scale) {
         y -= 26 * s;
     }
     // Under the entries (at the foot of the view when they are few).
-    if (summary_.mirrored)
-        add_text("half model,\ndrawn mirrored\nabout x = " + format("%g", summary_.mirror_x), 12 * s, x,
-                 std::min(y + 4 * s, viewport_.height_px * 0.06 + 24 * s), true);
-    renderer_->AddViewProp(legend_marks_.prop());
-    for (auto& n : notes_) renderer_->AddViewProp(n);
+    if (summary_.mirrored) {
+        const double top = std::min(y + 4 * s, viewport_.height_px * 0.06 + 24 * s);
+        const int lines = add_text("half model,\ndrawn mirrored\nabout x = " + format("%g", summary_.mirror_x), 12 * s, x, top, true);
+        y = top - 14 * lines * s;
+    }
+    return y; // below the last entry: negative when the legend runs off the view
 }
 
 void StructureView::show(vtkUnstructuredGrid* step) {

@@ -46,6 +46,8 @@ private:
     void add_with_mirror(vtkProp* prop, bool mirror); // and its mirror image for a half model
     void add_colour_bar(double text_scale);
     void add_legend(double text_scale);
+    // Lays the legend's marks and text out at a text scale; returns how far down it reached.
+    double lay_out_legend(double text_scale);
 
     const SeriesSummary& summary_;
     std::vector<std::unique_ptr<Layer>> layers_;
