@@ -58,6 +58,8 @@ VtuSeriesWriter::VtuSeriesWriter(const Model& model, const std::string& director
     fs::create_directories(fs::path(directory) / "vtu");
     const auto [load_unit, displacement_unit] = reported_units(model);
     units_ = {load_unit, displacement_unit};
+    for (const result::Array& a : result::arrays())
+        if (result::present(a, model)) arrays_.emplace(a.name);
     write_base();
 }
 
@@ -106,7 +108,7 @@ void set3(XmlArray& a, std::size_t tuple, double x, double y, double z) {
 void VtuSeriesWriter::write_step(const StepResult& r) {
     namespace name = result::name;
     const Model& m = *model_;
-    const auto has = [&m](const char* array) { return result::present(result::find(array), m); };
+    const auto has = [this](const char* array) { return arrays_.count(array) > 0; };
     const std::size_t n = m.nodes.size(), ne = m.elements.size();
     XmlDataset grid;
     grid.points.resize(3 * n);
@@ -329,7 +331,7 @@ void VtuSeriesWriter::write_base() {
         for (double v : {base.motion[0], base.motion[1], 0.0}) real(motion).push_back(v);
     }
     poly.cell_data.push_back(std::move(kind));
-    if (result::present(result::find(result::name::base_motion), m)) poly.cell_data.push_back(std::move(motion));
+    if (arrays_.count(result::name::base_motion)) poly.cell_data.push_back(std::move(motion));
     write_file_atomically((fs::path(directory_) / "base.vtp").string(), poly_data_xml(poly, options_.compression));
     has_base_file_ = true;
 }

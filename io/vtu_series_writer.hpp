@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,7 @@ private:
     struct Units {
         std::string load, displacement; // of the reported load and control displacement
     } units_;
+    std::set<std::string> arrays_; // the schema's arrays this scene writes, decided once
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> pvd_{nullptr, &std::fclose};
     long pvd_tail_ = 0; // where the closing tags start
     bool has_base_file_ = false;
