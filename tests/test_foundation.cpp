@@ -263,8 +263,12 @@ TEST_CASE("A ring between two plates, the upper one moving, is the headline ring
     // reported load is twice the half model's plate force; base_reaction sums both plates).
     for (const StepResult& r : plates.steps) CHECK(r.base_reaction == Approx(r.load).margin(1e-9).epsilon(1e-6));
     // Newton measures the residual against the platen's own force, so every step meets the
-    // tolerance by the residual (against λ × the penalty stiffness all passed by stagnation).
-    for (std::size_t k = 1; k < plates.steps.size(); ++k) CHECK(plates.steps[k].accepted_by == Acceptance::residual);
+    // scene's tolerance, 1e-5 (against λ × the penalty stiffness none could: they passed by
+    // stagnation, up to ten times the tolerance).
+    for (std::size_t k = 1; k < plates.steps.size(); ++k) {
+        CHECK(plates.steps[k].accepted_by != Acceptance::none);
+        CHECK(plates.steps[k].residual <= 1e-5);
+    }
     // The plate travel is the load factor; by its end the contact has spread to a second node on each plate.
     CHECK(plates.steps.back().load_factor == Approx(120.0));
     CHECK(plates.steps.back().contact_count >= 4); // two nodes on each plate

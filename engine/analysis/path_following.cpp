@@ -60,7 +60,22 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     return r;
 }
 
-NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control) {
+bool PathFollowing::extrapolating() const {
+    // Not along an arc: its constraint sphere already centres the corrector on the path, and
+    // the extrapolated point steers the root choice past a limit point into the wrong branch.
+    return analysis_.scheme != Scheme::arc_length && path_.ready();
+}
+
+double PathFollowing::path_parameter() const {
+    switch (analysis_.scheme) {
+    case Scheme::load_control: return lambda_;
+    case Scheme::displacement_control: return control_value(u_);
+    case Scheme::arc_length: return arc_length_;
+    }
+    return 0.0;
+}
+
+NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control, bool extrapolate) {
     const AnalysisSpec& a = analysis_;
     StructureProblem problem(system_, u_, lambda_, ubar_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
@@ -74,21 +89,31 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         trace_.push_back({step, iteration, relative});
         last_residual_ = relative;
     };
+    IncrementGuess guess;
+    const IncrementGuess* start = nullptr;
+    if (extrapolate && extrapolating()) {
+        const PathPoint ahead = path_.at(path_parameter() + (a.scheme == Scheme::arc_length ? std::abs(h) : h));
+        guess.dx = ahead.displacement - system_.gather(u_);
+        // Under load control the load factor is the path parameter: its step exactly.
+        guess.dlambda = a.scheme == Scheme::load_control ? h : ahead.load_factor - lambda_;
+        start = &guess;
+        settings.fail_fast = true; // the tangent's predictor is the fallback
+    }
     NewtonResult result;
     switch (a.scheme) {
     case Scheme::load_control: {
         LoadControl c(h);
-        result = solve_increment(problem, c, settings, solver_, hook);
+        result = solve_increment(problem, c, settings, solver_, hook, start);
         break;
     }
     case Scheme::displacement_control: {
         DisplacementControl c(control_equation_, h * a.control.sign);
-        result = solve_increment(problem, c, settings, solver_, hook);
+        result = solve_increment(problem, c, settings, solver_, hook, start);
         break;
     }
     case Scheme::arc_length: {
         ArcLength c(h, previous_increment_);
-        result = solve_increment(problem, c, settings, solver_, hook);
+        result = solve_increment(problem, c, settings, solver_, hook, start);
         break;
     }
     }
@@ -197,6 +222,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         initial_flexibility_ = f.dot(solver_.solve(f));
     }
     if (!publish(make_result(0, 0, Acceptance::none))) return finish(0);
+    path_.add(path_parameter(), system_.gather(u_), lambda_);
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
@@ -220,7 +246,16 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
         const Eigen::VectorXd u_saved = u_;
         const double lambda_saved = lambda_;
-        const NewtonResult outcome = attempt_increment(step_h, control);
+        NewtonResult outcome = attempt_increment(step_h, control, true);
+        if (!outcome.converged() && extrapolating()) {
+            // The extrapolation may overshoot a kink of the path (a hinge or contact that
+            // appears in this step): try the tangent's predictor before cutting the step.
+            summary.iterations += outcome.iterations;
+            u_ = u_saved;
+            lambda_ = lambda_saved;
+            system_.revert();
+            outcome = attempt_increment(step_h, control, false);
+        }
         summary.iterations += outcome.iterations;
         if (outcome.rule == Acceptance::residual) ++summary.accepted_by_residual;
         if (outcome.rule == Acceptance::stagnation) ++summary.accepted_by_stagnation;
@@ -283,6 +318,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
         arc_length_ += previous_increment_.norm();
+        path_.add(path_parameter(), system_.gather(u_), lambda_);
         const std::string crossing = check_penetration();
         if (!publish(make_result(step_, outcome.iterations, outcome.rule))) return finish(step_ - 1);
         if (!crossing.empty()) {
@@ -303,6 +339,17 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             summary.status = RunStatus::completed;
             summary.reason = a.target_load_factor ? "target load factor reached" : "target displacement reached";
             if (stage_ > 0) summary.reason += " (" + std::to_string(stage_ + 1) + " stages)";
+            break;
+        }
+        // Under load control a mechanism's regularised plateau can be followed in ever smaller
+        // load steps (the extrapolated start finds them): once the increment has been cut to
+        // a thousandth, a tangent without stiffness in the load direction is the limit load.
+        if (a.scheme == Scheme::load_control && std::abs(step_h) < 1e-3 * std::abs(a.initial_increment) &&
+            tangent_shows_limit()) {
+            summary.status = RunStatus::limit_load;
+            std::ostringstream why;
+            why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
+            summary.reason = why.str();
             break;
         }
     }
@@ -335,7 +382,13 @@ double PathFollowing::begin_stage(std::size_t k) {
     analysis_.target_displacement = s.target_displacement;
     const double value = s.target_load_factor ? lambda_ : control_value(u_);
     const double target = s.target_load_factor ? *s.target_load_factor : *s.target_displacement;
+    const double previous_direction = direction_;
     direction_ = target >= value ? 1.0 : -1.0;
+    // A stage that turns back starts from an elastic predictor: continued loading there may be
+    // a mechanism's tangent, which throws the first iterate far off.
+    if (direction_ != previous_direction) system_.predict_unloading();
+    path_.clear();
+    path_.add(path_parameter(), system_.gather(u_), lambda_);
     return direction_ * s.increment;
 }
 

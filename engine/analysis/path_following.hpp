@@ -5,6 +5,7 @@
 // Increments adapt to the iteration count; a failed increment is reverted and halved.
 #pragma once
 
+#include "analysis/path_extrapolation.hpp"
 #include "analysis/step_result.hpp"
 #include "analysis/structural_system.hpp"
 #include "model/model.hpp"
@@ -60,7 +61,13 @@ public:
 
 private:
     RunSummary run_steps(const std::vector<StepObserver>& observers, const RunControl& control, RunSummary& summary);
-    NewtonResult attempt_increment(double h, const RunControl& control);
+    // extrapolate: start from the path's quadratic extrapolation when there is one.
+    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate);
+    // Where the current state lies along the path: the controlled displacement, the load
+    // factor or the arc length, by the scheme.
+    double path_parameter() const;
+    // Whether the next increment starts from the path's extrapolation.
+    bool extrapolating() const;
     double next_increment(double h, double used, const NewtonResult& outcome) const;
     bool tangent_shows_limit();
     // The residual, relative to the load, that the rounding of the displacements alone leaves
@@ -98,6 +105,7 @@ private:
     double initial_flexibility_ = 0.0; // f·K₀⁻¹f of the unloaded structure
     std::string limit_evidence_;
     std::vector<IterationTrace> trace_;
+    PathExtrapolation path_; // the last converged states, for the predictor
 };
 
 } // namespace plastica

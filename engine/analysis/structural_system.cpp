@@ -1,5 +1,7 @@
 #include "analysis/structural_system.hpp"
 
+#include "analysis/hinge_allocation.hpp"
+
 #include "element/distributed_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
 
@@ -40,9 +42,9 @@ std::vector<std::vector<int>> assembly_blocks(const Model& model, const std::vec
     return blocks;
 }
 
-std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, std::array<bool, 2> capacity_at) {
+std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, HingeEnds ends_served) {
     switch (s.plasticity) {
-    case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, capacity_at);
+    case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, ends_served);
     case Plasticity::distributed: return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
     case Plasticity::none: break;
     }
@@ -59,24 +61,14 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
     for (const FoundationSpring& s : model.springs)
         on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
     driven_by_platens_ = model.driven_by_platens();
-    // One plastic hinge per node where exactly two inelastic elements meet: the first
-    // element's end carries the capacity, the second's keeps only its pseudo-spring.
-    std::vector<int> members(model.nodes.size(), 0);
-    for (const ElementSpec& e : model.elements) ++members[e.node_i], ++members[e.node_j];
-    std::vector<bool> hinge_taken(model.nodes.size(), false);
+    const std::vector<HingeEnds> ends_served = allocate_hinge_capacity(model);
     elements_.reserve(model.elements.size());
-    for (const ElementSpec& e : model.elements) {
+    for (std::size_t i = 0; i < model.elements.size(); ++i) {
+        const ElementSpec& e = model.elements[i];
         const Node& a = model.nodes[e.node_i];
         const Node& b = model.nodes[e.node_j];
-        std::array<bool, 2> capacity_at{true, true};
-        const int ends[2] = {e.node_i, e.node_j};
-        for (int end = 0; end < 2; ++end) {
-            if (members[ends[end]] != 2 || model.sections[e.section].plasticity != Plasticity::hinges) continue;
-            capacity_at[end] = !hinge_taken[ends[end]];
-            hinge_taken[ends[end]] = true;
-        }
         distributed_.push_back(model.sections[e.section].plasticity == Plasticity::distributed);
-        elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), capacity_at));
+        elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
     }
     internal_ = Eigen::VectorXd::Zero(dof_count());
     coupling_ = Eigen::VectorXd::Zero(free_count_);
@@ -150,6 +142,10 @@ Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {
 void StructuralSystem::scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const {
     for (int i = 0; i < dof_count(); ++i)
         if (equation_[i] >= 0) full[i] = free[equation_[i]];
+}
+
+void StructuralSystem::predict_unloading() {
+    for (CorotationalBeam& e : elements_) e.predict_unloading();
 }
 
 void StructuralSystem::commit() {

@@ -52,6 +52,8 @@ public:
     void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;
 
     void commit();
+    // The next increment turns the load back: its predictor unloads elastically.
+    void predict_unloading();
     void revert();
 
     // Fills the element, spring and reaction parts of a step result (committed state).

@@ -47,6 +47,9 @@ public:
     // Hinge states (loading/unloading, active capacity sides) settle inside Newton like a
     // contact active set: frozen after some iterations, then checked for consistency.
     virtual void freeze_states(bool /*frozen*/) {}
+    // The next increment's predictor, taken at the committed state, follows the elastic
+    // stiffness instead of continued loading (where the load turns back); until the next commit.
+    virtual void predict_unloading() {}
     virtual bool states_consistent() const { return true; }
     virtual std::unique_ptr<BasicLaw> clone() const = 0;
 };

@@ -38,6 +38,7 @@ public:
     void commit();
     void revert();
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }
+    void predict_unloading() { law_->predict_unloading(); }
 
     BeamForces forces() const;
     const BasicLaw& law() const { return *law_; }

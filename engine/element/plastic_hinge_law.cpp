@@ -14,11 +14,12 @@ constexpr double on_capacity = 1e-9;
 constexpr double no_limit = std::numeric_limits<double>::infinity();
 } // namespace
 
-PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, std::array<bool, 2> capacity_at)
+PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnds ends_served)
     : EA_(section.E * section.area), EI_(section.E * section.inertia), L0_(L0),
       sections_{FibreSection(section), FibreSection(section)},
       k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)), f_elastic_(k_elastic_.inverse()),
-      moment_scale_(sections_[0].moment_capacity(0.0, 1.0)), capacity_at_(capacity_at) {
+      moment_scale_(sections_[0].moment_capacity(0.0, 1.0)),
+      capacity_at_{ends_served[0] > 0, ends_served[1] > 0}, ends_served_(ends_served) {
     rows_.assign(row_count, YieldRow{});
     for (YieldRow& r : rows_) r.limit = no_limit;
     const FibreSection& s = sections_[0];
@@ -67,7 +68,7 @@ void PlasticHingeLaw::linearise_capacity(double N) {
         row.a[0] = -v.slope / moment_scale_;
         row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
         row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[r];
-        row.hardening = regularising_hardening * row.a.dot(k_elastic_ * row.a);
+        row.hardening = regularising_hardening / ends_served_[end] * row.a.dot(k_elastic_ * row.a);
     }
 }
 
@@ -108,7 +109,7 @@ void PlasticHingeLaw::set_without_flow(const Eigen::Vector3d& e, const Eigen::Ve
 }
 
 void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
-    if (e == e_c_ && !loading_c_.empty()) {
+    if (e == e_c_ && !loading_c_.empty() && !unloading_predictor_) {
         // At the committed state the response is one-sided: give the tangent of continued
         // loading (the rows that carried the last step's flow), the predictor of the next step.
         set_without_flow(e, q_c_, elastoplastic_tangent(k_elastic_, rows_, loading_c_), q, k);
@@ -124,17 +125,41 @@ void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen:
     }
     for (Row r : {tension, compression}) rows_[r].limit = 1.0 + hardened_[r];
     // Linearise the capacity at the trial state, return, and repeat at the returned N.
+    // The returned N is a function G of the N the surface is linearised at; the state on the
+    // curved surface is its fixed point. Plain repetition N ← G(N) has the factor
+    // −(γ·|M_p″|/M_p(0))·(EA/L) per pass, which a hinge flowing far in one step takes to 1 (N
+    // then swings from pass to pass and the tangent no longer fits the state), so the fixed
+    // point is found by the secant method on G(N) − N, kept inside the bracket the passes
+    // have found (bisected where the secant leaves it or the active rows change, as they do
+    // where the surface's side switches with N).
     double N = q_trial[0];
+    double previous_N = 0.0, previous_gap = 0.0;
+    double below = -std::numeric_limits<double>::infinity(); // G(N) > N there
+    double above = std::numeric_limits<double>::infinity();  // G(N) < N there
     std::vector<int> working = frozen_ ? active_t_ : active_c_;
     ReturnMap r;
+    const double N_scale = sections_[0].axial_capacity_tension();
     for (int pass = 0; pass < 30; ++pass) {
         linearise_capacity(N);
         r = return_map(k_elastic_, q_trial, rows_, working, frozen_);
         if (!r.ok) break;
         const bool on_curve = std::any_of(r.active.begin(), r.active.end(),
                                           [](int row) { return capacity_row(row); });
-        if (!on_curve || std::abs(r.q[0] - N) <= 1e-12 * sections_[0].axial_capacity_tension()) break;
-        N = r.q[0];
+        const double gap = r.q[0] - N;
+        if (!on_curve || std::abs(gap) <= 1e-12 * N_scale) break;
+        (gap > 0.0 ? below : above) = N;
+        double next = r.q[0];
+        const bool same_rows = pass > 0 && r.active == working;
+        if (same_rows && N != previous_N) {
+            const double derivative = (gap - previous_gap) / (N - previous_N);
+            if (std::abs(derivative) > 1e-12) next = N - gap / derivative;
+        }
+        if (std::isfinite(below) && std::isfinite(above) && (!same_rows || next <= std::min(below, above) ||
+                                                             next >= std::max(below, above)))
+            next = 0.5 * (below + above);
+        previous_N = N;
+        previous_gap = gap;
+        N = next;
         working = r.active;
     }
     if (!r.ok) {
@@ -190,8 +215,13 @@ void PlasticHingeLaw::commit() {
             ++report.section_failures;
         } else {
             // On the capacity surface (or between the fibre polygon and its rounding): the
-            // capacity rows govern; no pseudo-spring.
+            // capacity rows govern; no pseudo-spring. The fibres remember the state just below
+            // capacity, so that an end that unloads and reloads is elastic up to the moment it
+            // carried (left where they were when that state is out of the section's reach).
             section.revert();
+            const double sign = m >= 0.0 ? 1.0 : -1.0;
+            if (section.solve_for_forces(N, sign * (1.0 - 1e-3) * cap).outcome == ScmOutcome::converged) section.commit();
+            else section.revert();
             report.utilisation = 1.0;
             report.ei_ratio = 0.0;
             report.ea_ratio = 0.0;
@@ -213,6 +243,7 @@ void PlasticHingeLaw::commit() {
     }
     e_c_ = e_t_;
     q_c_ = q_t_;
+    unloading_predictor_ = false;
     // Only capacity rows carry over as a warm start; the loading surfaces move with the state.
     active_c_.clear();
     for (int r : active_t_)

@@ -21,6 +21,7 @@
 #pragma once
 
 #include "element/basic_law.hpp"
+#include "element/hinge_ends.hpp"
 #include "element/return_map.hpp"
 #include "section/fibre_section.hpp"
 
@@ -33,11 +34,12 @@ class PlasticHingeLaw final : public BasicLaw {
 public:
     static constexpr double regularising_hardening = 1e-6;
 
-    // capacity_at: which ends carry capacity rows. Where two elements meet at a node their end
-    // moments are equal, so one plastic hinge serves the node; two would leave its rotation
-    // free (the split of the plastic rotation between them is arbitrary) and the tangent
-    // singular. The other end keeps its pseudo-spring.
-    PlasticHingeLaw(const SectionSpec& section, double L0, std::array<bool, 2> capacity_at = {true, true});
+    // ends_served: for each end, how many element ends its capacity rows serve
+    // (analysis/hinge_allocation.hpp): 0, none (it keeps its pseudo-spring only); 1, its own;
+    // 2, its own and the other element's at the node, where nothing else takes moment. A row
+    // serving two ends has half the regularising hardening: the node's hinge then hardens
+    // like the two ends' hinges in series, as it does where each end has its own.
+    PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnds ends_served = {1, 1});
 
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     void commit() override;
@@ -46,6 +48,7 @@ public:
     HingeReport hinge(int end) const override { return committed_end_[end]; }
     Eigen::Vector3d plastic_deformation() const override;
     void freeze_states(bool frozen) override { frozen_ = frozen; }
+    void predict_unloading() override { unloading_predictor_ = true; }
     bool states_consistent() const override { return consistent_; }
     std::unique_ptr<BasicLaw> clone() const override {
         return std::make_unique<PlasticHingeLaw>(*this);
@@ -80,7 +83,8 @@ private:
     static int row_end(int r) { return (r - capacity_i) % 2; }
     static double row_sign(int r) { return r < negative_i ? 1.0 : -1.0; }
     std::vector<YieldRow> rows_;
-    std::array<bool, 2> capacity_at_;
+    std::array<bool, 2> capacity_at_;   // ends with capacity rows
+    HingeEnds ends_served_;
     std::array<double, row_count> hardened_{};     // remembered hardening of each row's limit
 
     // Committed state.
@@ -99,6 +103,7 @@ private:
     std::vector<double> gamma_t_;
     double curvature_t_ = 0.0; // Σγ·(−M_p″)/M_p of active capacity rows
     bool frozen_ = false;
+    bool unloading_predictor_ = false; // until the next commit
     bool consistent_ = true;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace plastica {
@@ -30,11 +31,19 @@ const char* to_string(NewtonFailure failure) {
 
 NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constraint,
                              const NewtonSettings& settings, LinearSolver& solver,
-                             const IterationHook& hook) {
+                             const IterationHook& hook, const IncrementGuess* guess) {
     NewtonResult result;
+    if (guess) {
+        problem.move(guess->dx, guess->dlambda);
+        result.increment = guess->dx;
+        result.load_change = guess->dlambda;
+    }
+    const int first_constraint_iteration = guess ? 1 : 0;
     double last_correction = 0.0;
     double damping = 1.0;
     std::vector<double> history; // residual norms of the iterations so far
+    double lowest = std::numeric_limits<double>::infinity(); // of the corrections' residuals
+    int last_lowest = 1;
     bool release = false; // re-decide frozen active sets at the next evaluation
     if (!problem.evaluate(0, false)) {
         result.failure = NewtonFailure::non_finite;
@@ -96,6 +105,19 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
                     return result;
                 }
             }
+            if (settings.fail_fast && it == 1 && relative > previous_relative &&
+                relative > settings.stagnation_factor * settings.residual_tolerance) {
+                result.failure = NewtonFailure::diverged;
+                return result;
+            }
+            // Ten corrections without a new lowest residual since the first: Newton is
+            // wandering, not converging: a cut increment costs less than the remaining ones.
+            if (it > 1) lowest = std::min(lowest, relative);
+            if (it > 1 && relative <= lowest) last_lowest = it;
+            if (it - std::max(last_lowest, 1) >= settings.stall_iterations) {
+                result.failure = NewtonFailure::diverged;
+                return result;
+            }
             if (relative > 1e8) {
                 result.failure = NewtonFailure::diverged;
                 return result;
@@ -110,7 +132,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         result.negative_pivots_seen = std::max(result.negative_pivots_seen, solver.negative_pivots());
         const Eigen::VectorXd du_r = solver.solve(residual);
         const Eigen::VectorXd du_f = solver.solve(load);
-        const double dl = constraint.load_change(it, result.increment, du_r, du_f);
+        const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f);
         if (!std::isfinite(dl)) {
             result.failure = NewtonFailure::no_constraint_root;
             return result;

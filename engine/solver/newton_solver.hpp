@@ -56,6 +56,11 @@ struct NewtonSettings {
     double reference_level = 0.0;         // |λ| the residual is measured against (0: this increment's)
     // Stagnation at round-off is accepted only within this multiple of the tolerance.
     double stagnation_factor = 10.0;
+    // Give up at once when the first correction does not lower the residual (above the
+    // stagnation band): for a start from a guess, which another start can replace.
+    bool fail_fast = false;
+    // Give up after this many corrections without a new lowest residual.
+    int stall_iterations = 10;
 };
 
 struct NewtonResult {
@@ -76,8 +81,15 @@ struct NewtonResult {
 
 using IterationHook = std::function<void(int iteration, double relative_residual)>;
 
+// A first estimate of the increment (extrapolated from the path). With one, Newton starts
+// there and every iteration is a corrector: the constraint is asked as from iteration 1 on.
+struct IncrementGuess {
+    Eigen::VectorXd dx;
+    double dlambda = 0.0;
+};
+
 NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constraint,
                              const NewtonSettings& settings, LinearSolver& solver,
-                             const IterationHook& hook = {});
+                             const IterationHook& hook = {}, const IncrementGuess* guess = nullptr);
 
 } // namespace plastica

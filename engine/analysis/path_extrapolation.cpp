@@ -1,0 +1,32 @@
+#include "analysis/path_extrapolation.hpp"
+
+namespace plastica {
+
+void PathExtrapolation::add(double parameter, const Eigen::VectorXd& displacement, double load_factor) {
+    if (count_ == 3) {
+        std::swap(points_[0], points_[1]);
+        std::swap(points_[1], points_[2]);
+        --count_;
+    }
+    PathPoint& p = points_[count_++];
+    p.parameter = parameter;
+    p.displacement = displacement;
+    p.load_factor = load_factor;
+}
+
+PathPoint PathExtrapolation::at(double s) const {
+    // Lagrange weights of the quadratic through the three points.
+    std::array<double, 3> w{};
+    for (int i = 0; i < 3; ++i) {
+        w[i] = 1.0;
+        for (int j = 0; j < 3; ++j)
+            if (j != i) w[i] *= (s - points_[j].parameter) / (points_[i].parameter - points_[j].parameter);
+    }
+    PathPoint p;
+    p.parameter = s;
+    p.displacement = w[0] * points_[0].displacement + w[1] * points_[1].displacement + w[2] * points_[2].displacement;
+    p.load_factor = w[0] * points_[0].load_factor + w[1] * points_[1].load_factor + w[2] * points_[2].load_factor;
+    return p;
+}
+
+} // namespace plastica
