@@ -1,7 +1,9 @@
 // Newton's method and the increment constraints on toy problems whose exact answers are known:
 // a two-DOF snap-through traced past its limit point, a one-spring contact settled inside
-// Newton, and one plastic hinge driven past its capacity.
+// Newton, one plastic hinge driven past its capacity, and the path extrapolation that starts
+// an increment.
 #include "analysis/increment_constraints.hpp"
+#include "analysis/path_extrapolation.hpp"
 #include "element/plastic_hinge_law.hpp"
 #include "section/fibre_section.hpp"
 #include "solver/newton_solver.hpp"
@@ -228,4 +230,23 @@ TEST_CASE("One plastic hinge driven past its capacity: quadratic steps, moment h
     CHECK(over_three <= 2); // the steps where the end yields or reaches capacity
     CHECK(problem.law.hinge(1).state == HingeState::plastic);
     CHECK(problem.lambda_ == Approx(Mp).epsilon(1e-4));
+}
+
+TEST_CASE("The path extrapolation reproduces a quadratic path exactly and keeps distinct parameters", "[newton]") {
+    // u(s) = (s², 3s − 1), λ(s) = 2s² + 1 through s = 0, 1, 3: the predictor at 4.5 is exact.
+    const auto u = [](double s) { return Eigen::Vector2d(s * s, 3.0 * s - 1.0); };
+    const auto lambda = [](double s) { return 2.0 * s * s + 1.0; };
+    PathExtrapolation path;
+    for (double s : {0.0, 1.0}) path.add(s, u(s), lambda(s));
+    CHECK_FALSE(path.ready());
+    path.add(1.0, u(1.0), lambda(1.0)); // the same parameter again replaces the point there
+    CHECK_FALSE(path.ready());
+    path.add(3.0, u(3.0), lambda(3.0));
+    REQUIRE(path.ready());
+    const PathPoint p = path.at(4.5);
+    CHECK((p.displacement - u(4.5)).norm() <= 1e-12 * u(4.5).norm());
+    CHECK(p.load_factor == Approx(lambda(4.5)).epsilon(1e-14));
+    // A fourth point drops the oldest: through s = 1, 3, 4 it stays exact.
+    path.add(4.0, u(4.0), lambda(4.0));
+    CHECK(path.at(6.0).load_factor == Approx(lambda(6.0)).epsilon(1e-14));
 }

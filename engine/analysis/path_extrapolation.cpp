@@ -3,6 +3,9 @@
 namespace plastica {
 
 void PathExtrapolation::add(double parameter, const Eigen::VectorXd& displacement, double load_factor) {
+    // Points at distinct parameters only (the quadratic through them divides by their spacing):
+    // a state at the same parameter replaces the one there.
+    if (count_ > 0 && parameter == points_[count_ - 1].parameter) --count_;
     if (count_ == 3) {
         std::swap(points_[0], points_[1]);
         std::swap(points_[1], points_[2]);
