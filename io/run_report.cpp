@@ -36,6 +36,7 @@ std::string to_json(const RunReport& r) {
     j["steps"] = r.summary.steps;
     j["iterations"] = r.summary.iterations;
     j["cut_steps"] = r.summary.cut_steps;
+    j["refined_steps"] = r.summary.refined_steps;
     // Which rule accepted the steps: the residual within its tolerance, or round-off
     // stagnation within ten times it (never more).
     j["accepted_by"] = {{"residual", r.summary.accepted_by_residual}, {"stagnation", r.summary.accepted_by_stagnation}};

@@ -15,6 +15,9 @@
 namespace plastica {
 
 namespace {
+// How far into its yielding range (in |M|/M_p) one adaptive increment may carry a hinge section.
+constexpr double max_yield_advance = 0.1;
+
 Eigen::VectorXd nodal_loads(const Model& model) {
     Eigen::VectorXd force = Eigen::VectorXd::Zero(model.dof_count());
     for (const NodalLoad& l : model.loads)
@@ -314,6 +317,18 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             summary.reason = why.str();
             break;
         }
+        // Adaptive increments also bound the error of the hinges' explicit pseudo-springs (η from
+        // the start of the step): a step that carries a section further than max_yield_advance
+        // into its yielding range is taken again, smaller in proportion.
+        const double advance = a.adaptive ? system_.trial_yield_advance() : 0.0;
+        if (advance > max_yield_advance && std::abs(step_h) * 0.5 >= h_min) {
+            u_ = u_saved;
+            lambda_ = lambda_saved;
+            system_.revert();
+            ++summary.refined_steps;
+            h = step_h * std::max(0.25, 0.9 * max_yield_advance / advance);
+            continue;
+        }
         system_.commit();
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
@@ -329,7 +344,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
 
         ++steps_since_cut_;
         const double before = std::abs(h);
-        h = next_increment(h, step_h, outcome);
+        h = next_increment(h, step_h, outcome, advance);
         if (std::abs(h) > before) steps_since_cut_ = 0;
         if (target_reached()) {
             if (stage_ < model_.stages.size()) {
@@ -392,7 +407,7 @@ double PathFollowing::begin_stage(std::size_t k) {
     return direction_ * s.increment;
 }
 
-double PathFollowing::next_increment(double h, double used, const NewtonResult& outcome) const {
+double PathFollowing::next_increment(double h, double used, const NewtonResult& outcome, double yield_advance) const {
     const AnalysisSpec& a = analysis_;
     const double sign = h >= 0.0 ? 1.0 : -1.0;
     double next = std::abs(h);
@@ -405,6 +420,7 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
         const int iterations = outcome.iterations_before_settling > 0 ? outcome.iterations_before_settling : outcome.iterations;
         double factor = std::sqrt(static_cast<double>(a.desired_iterations) / std::max(iterations, 1));
         if (outcome.contraction <= 0.1) factor = std::max(factor, 1.0);
+        if (yield_advance > 0.0) factor = std::min(factor, max_yield_advance / yield_advance);
         next = std::abs(used) * std::clamp(factor, 0.5, 2.0);
         if (std::abs(used) < std::abs(h) && factor >= 1.0) next = std::max(next, std::abs(h)); // a landing step
     } else if (next < std::abs(a.initial_increment) && steps_since_cut_ >= 3) {

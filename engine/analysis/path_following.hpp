@@ -68,7 +68,7 @@ private:
     double path_parameter() const;
     // Whether the next increment starts from the path's extrapolation.
     bool extrapolating() const;
-    double next_increment(double h, double used, const NewtonResult& outcome) const;
+    double next_increment(double h, double used, const NewtonResult& outcome, double yield_advance) const;
     bool tangent_shows_limit();
     // The residual, relative to the load, that the rounding of the displacements alone leaves
     // (see the definition), and the part of it the foundation springs' penalties cause.

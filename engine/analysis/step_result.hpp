@@ -59,6 +59,9 @@ struct RunSummary {
     int steps = 0;
     int iterations = 0;
     int cut_steps = 0;
+    // Converged steps of adaptive increments taken again smaller because a hinge section's
+    // stiffness fell too far within them (not counted as cut).
+    int refined_steps = 0;
     int accepted_by_residual = 0;
     int accepted_by_stagnation = 0;
     double seconds = 0.0;

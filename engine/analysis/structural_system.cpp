@@ -5,6 +5,7 @@
 #include "element/distributed_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace plastica {
@@ -130,6 +131,12 @@ bool StructuralSystem::hinge_states_consistent() const {
     for (const CorotationalBeam& e : elements_)
         if (!e.law().states_consistent()) return false;
     return true;
+}
+
+double StructuralSystem::trial_yield_advance() const {
+    double drop = 0.0;
+    for (const CorotationalBeam& e : elements_) drop = std::max(drop, e.trial_yield_advance());
+    return drop;
 }
 
 Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {

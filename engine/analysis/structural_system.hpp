@@ -47,6 +47,9 @@ public:
     bool on_moving_base(std::size_t spring) const { return on_moving_base_[spring]; }
     // Whether every element's hinge states (frozen or not) agree with the evaluated state.
     bool hinge_states_consistent() const;
+    // The largest advance of a section into its yielding range over the trial step, among
+    // laws that integrate their stiffness explicitly (BasicLaw::trial_yield_advance).
+    double trial_yield_advance() const;
 
     Eigen::VectorXd gather(const Eigen::VectorXd& full) const;
     void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;

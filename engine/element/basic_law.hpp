@@ -51,6 +51,12 @@ public:
     // stiffness instead of continued loading (where the load turns back); until the next commit.
     virtual void predict_unloading() {}
     virtual bool states_consistent() const { return true; }
+    // How far the trial step carries a section into its yielding range, as the rise of
+    // |M|/M_p(N) above the larger of the committed value and first yield (0 … 1), for a law
+    // that integrates its stiffness explicitly over a step (the hinges' pseudo-springs take η
+    // from the start of the step): adaptive increments keep it small. 0 for a law whose
+    // response does not depend on the step size.
+    virtual double trial_yield_advance() const { return 0.0; }
     virtual std::unique_ptr<BasicLaw> clone() const = 0;
 };
 

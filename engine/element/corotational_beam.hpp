@@ -39,6 +39,7 @@ public:
     void revert();
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }
     void predict_unloading() { law_->predict_unloading(); }
+    double trial_yield_advance() const { return law_->trial_yield_advance(); }
 
     BeamForces forces() const;
     const BasicLaw& law() const { return *law_; }

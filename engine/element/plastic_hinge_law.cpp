@@ -257,6 +257,21 @@ void PlasticHingeLaw::commit() {
                      loading_c_.end());
 }
 
+double PlasticHingeLaw::trial_yield_advance() const {
+    double advance = 0.0;
+    for (int end = 0; end < 2; ++end) {
+        const double m_t = std::abs(section_moment(q_t_, end));
+        const double cap_t = sections_[end].hinge_moment_capacity(q_t_[0], section_moment(q_t_, end) >= 0.0 ? 1.0 : -1.0);
+        const double cap_c = sections_[end].hinge_moment_capacity(q_c_[0], section_moment(q_c_, end) >= 0.0 ? 1.0 : -1.0);
+        if (!(cap_t > 0.0) || !(cap_c > 0.0)) continue;
+        const double u_t = std::min(m_t / cap_t, 1.0);
+        const double u_c = std::min(std::abs(section_moment(q_c_, end)) / cap_c, 1.0);
+        const double u_y = std::clamp(sections_[end].first_yield_moment(q_t_[0]) / cap_t, 0.0, 1.0);
+        advance = std::max(advance, u_t - std::max(u_c, u_y));
+    }
+    return advance;
+}
+
 void PlasticHingeLaw::revert() {
     e_t_ = e_c_;
     q_t_ = q_c_;

@@ -50,6 +50,7 @@ public:
     void freeze_states(bool frozen) override { frozen_ = frozen; }
     void predict_unloading() override { unloading_predictor_ = true; }
     bool states_consistent() const override { return consistent_; }
+    double trial_yield_advance() const override;
     std::unique_ptr<BasicLaw> clone() const override {
         return std::make_unique<PlasticHingeLaw>(*this);
     }
