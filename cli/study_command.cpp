@@ -26,7 +26,7 @@ int study_command(const Args& args) {
     options.add_options()
         ("scene", po::value<std::string>()->required(), "scene file (TOML)")
         ("vary", po::value<std::vector<std::string>>()->composing(),
-         "NAME=v1,v2,… with NAME elements, fibres, integration_points or increment (repeatable); plasticity=hinges,distributed runs every ladder with each method against the last method's finest level")
+         "NAME=v1,v2,… with NAME elements, fibres, integration_points, segments or increment (repeatable); plasticity=hinges,distributed runs every ladder with each method against the last method's finest level")
         ("reference", po::value<std::string>(), "exact, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form)")
         ("at", po::value<std::string>(), "displacements where the error is reported, e.g. 20,40,60")
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>/study)");

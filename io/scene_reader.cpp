@@ -156,9 +156,12 @@ private:
             if (plasticity == "distributed") {
                 s.plasticity = Plasticity::distributed;
                 s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
+                s.segments = r.integer_or("segments", default_segments, 1, 16);
             } else {
                 if (r.has("integration_points"))
                     r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
+                if (r.has("segments"))
+                    r.fail("segments", "only a section with plasticity = \"distributed\" has segments");
                 s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
             }
             if (s.plasticity == Plasticity::hinges && hardens)
@@ -168,7 +171,7 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
-            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "integration_points"};
+            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "integration_points", "segments"};
             keys.insert(keys.end(), shape.keys.begin(), shape.keys.end());
             r.finish(keys);
             section_index_[name] = static_cast<int>(model_.sections.size());

@@ -37,7 +37,10 @@ int set_plasticity(toml::table& root, const std::string& plasticity) {
         for (toml::node& item : *sections)
             if (toml::table* t = item.as_table(); t && inelastic.count((*t)["material"].value_or(std::string()))) {
                 t->insert_or_assign("plasticity", plasticity);
-                if (plasticity != "distributed") t->erase("integration_points");
+                if (plasticity != "distributed") {
+                    t->erase("integration_points");
+                    t->erase("segments");
+                }
                 ++changed;
             }
     return changed;
@@ -57,12 +60,12 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
         changed = set_in_tables(root, "line", "elements", value) + set_in_tables(root, "arc", "elements", value);
     } else if (parameter == "fibres") {
         changed = set_in_tables(root, "section", "fibres", value);
-    } else if (parameter == "integration_points") {
+    } else if (parameter == "integration_points" || parameter == "segments") {
         // Every section with distributed plasticity, whether or not it names the count.
         if (toml::array* sections = root["section"].as_array())
             for (toml::node& item : *sections)
                 if (toml::table* t = item.as_table(); t && (*t)["plasticity"].value_or(std::string()) == "distributed") {
-                    t->insert_or_assign("integration_points", static_cast<int64_t>(std::llround(value)));
+                    t->insert_or_assign(parameter, static_cast<int64_t>(std::llround(value)));
                     ++changed;
                 }
     } else if (parameter == "increment") {
@@ -75,7 +78,7 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
             changed = 1;
         }
     } else {
-        throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres, integration_points and increment");
+        throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres, integration_points, segments and increment");
     }
     if (changed == 0) throw StudyError(file + ": no '" + parameter + "' to vary in this scene");
     if (!plasticity.empty() && set_plasticity(root, plasticity) == 0)

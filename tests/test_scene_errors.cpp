@@ -116,6 +116,7 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"plastic section without fy", replaced("I = 1.0", "I = 1.0\nplasticity = \"hinges\""), "an inelastic section needs a material with 'fy'", 11},
         {"the old plastic boolean", replaced("I = 1.0", "I = 1.0\nplastic = true"), "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"", 11},
         {"integration points of hinges", replaced("I = 1.0", "I = 1.0\nintegration_points = 3"), "only a section with plasticity = \"distributed\" has integration points", 11},
+        {"segments of hinges", replaced("I = 1.0", "I = 1.0\nsegments = 4"), "only a section with plasticity = \"distributed\" has segments", 11},
         {"unilateral base without ky", good + "[[foundation]]\nkind = \"unilateral\"\non = \"all\"\nkx = 1.0\n", "a unilateral base needs a positive normal stiffness", 26},
         {"penetrating base", good + "[[foundation]]\nkind = \"unilateral\"\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.5]\n", "already penetrates the base at [0, 0], [0.5, 0], [1, 0]", 30},
         {"unused node", good + "[[node]]\nid = 1\nx = 3.0\ny = 3.0\n", "node 1 belongs to no element", 26},

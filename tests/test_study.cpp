@@ -45,7 +45,7 @@ TEST_CASE("A scene variant changes one discretisation parameter and nothing else
     CHECK(small_steps.analysis.initial_increment == 0.25);
     CHECK(small_steps.analysis.max_steps >= 400);
     CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "fibres", 10), Catch::Contains("no 'fibres' to vary"));
-    CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "colour", 10), Catch::Contains("elements, fibres, integration_points and increment"));
+    CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "colour", 10), Catch::Contains("elements, fibres, integration_points, segments and increment"));
 }
 
 TEST_CASE("The curve error is zero for the reference itself and measures a known offset", "[study]") {

@@ -307,13 +307,17 @@ TEST_CASE("The sections along the members read back at every integration point",
     REQUIRE(curvature);
     REQUIRE(moment);
     REQUIRE(largest);
-    CHECK(share->GetNumberOfComponents() == default_integration_points);
+    // The scene's elements have 4 segments of 2 Gauss points: 8 sections each, in ξ order.
+    const int sections_per_element = 8;
+    CHECK(s.model.integration_points() == sections_per_element);
+    CHECK(share->GetNumberOfComponents() == sections_per_element);
     int yielded = 0;
     for (vtkIdType e = 0; e < reader->GetOutput()->GetNumberOfCells(); ++e) {
         const std::vector<SectionReport>& sections = r.elements[e].sections;
-        REQUIRE(sections.size() == static_cast<std::size_t>(default_integration_points));
+        REQUIRE(sections.size() == static_cast<std::size_t>(sections_per_element));
+        for (int k = 1; k < sections_per_element; ++k) CHECK(sections[k].xi > sections[k - 1].xi);
         double most = 0.0;
-        for (int k = 0; k < default_integration_points; ++k) {
+        for (int k = 0; k < sections_per_element; ++k) {
             CHECK(share->GetComponent(e, k) == sections[k].yielded_share);
             CHECK(curvature->GetComponent(e, k) == sections[k].curvature);
             CHECK(moment->GetComponent(e, k) == sections[k].moment);

@@ -4,6 +4,7 @@
 
 #include "element/distributed_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
+#include "element/segmented_plasticity_law.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +47,9 @@ std::vector<std::vector<int>> assembly_blocks(const Model& model, const std::vec
 std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, HingeEnds ends_served) {
     switch (s.plasticity) {
     case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, ends_served);
-    case Plasticity::distributed: return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
+    case Plasticity::distributed:
+        if (s.segments > 1) return std::make_unique<SegmentedPlasticityLaw>(s, L0, s.segments, s.integration_points);
+        return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
     case Plasticity::none: break;
     }
     return std::make_unique<ElasticLaw>(s.E * s.area, s.E * s.inertia, L0);

@@ -21,7 +21,7 @@ int Model::integration_points() const {
     int most = 0;
     for (const ElementSpec& e : elements)
         if (sections[e.section].plasticity == Plasticity::distributed)
-            most = std::max(most, sections[e.section].integration_points);
+            most = std::max(most, sections[e.section].segments * sections[e.section].integration_points);
     return most;
 }
 

@@ -50,8 +50,10 @@ enum class Plasticity {
     distributed, // fibre sections at integration points along the member (plastic zone)
 };
 
-// Gauss–Legendre points per element of a distributed-plasticity member unless the scene says.
+// Gauss–Legendre points per segment, and segments per element, of a distributed-plasticity
+// member unless the scene says.
 inline constexpr int default_integration_points = 3;
+inline constexpr int default_segments = 1;
 
 // A section carries elastic properties for the beam interior and, when the scene is
 // inelastic, a fibre discretisation used by the plastic hinges (Strain Compatibility Method).
@@ -63,7 +65,8 @@ struct SectionSpec {
     std::optional<SteelSpec> steel; // present: inelastic section with fibres
     std::vector<Fibre> fibres;      // filled when steel is present
     Plasticity plasticity = Plasticity::none; // hinges or distributed when steel is present
-    int integration_points = 0;     // distributed: Gauss–Legendre points per element
+    int integration_points = 0;     // distributed: Gauss–Legendre points per segment
+    int segments = 1;               // distributed: segments per element (inner nodes condensed)
     double mass_per_length = 0.0;   // density × area, for self weight
 };
 
@@ -197,7 +200,7 @@ struct Model {
     int dof_count() const { return dofs_per_node * static_cast<int>(nodes.size()); }
     bool inelastic() const;
     bool has_plasticity(Plasticity kind) const; // some element's section models it this way
-    int integration_points() const;             // most points of a distributed-plasticity element
+    int integration_points() const;             // most sections along a distributed-plasticity element
     bool has_unilateral_base() const;
     // Whether a base moves with the load factor (a platen).
     bool has_moving_base() const;
