@@ -10,61 +10,48 @@ constexpr int max_element_iterations = 40;
 // The inner nodes are in equilibrium when their forces are this small against the element's.
 constexpr double inner_tolerance = 1e-10;
 
-// How segment s of n sees the basic deformations [u_l, θ_i, θ_j] in its nodes' (u, w, θ):
-// the axial motion is shared in proportion, θ_i and θ_j act at the element's ends.
-Eigen::Matrix<double, 6, 3> basic_map(std::size_t s, std::size_t n) {
-    Eigen::Matrix<double, 6, 3> G = Eigen::Matrix<double, 6, 3>::Zero();
-    G(0, 0) = static_cast<double>(s) / static_cast<double>(n);
-    G(3, 0) = static_cast<double>(s + 1) / static_cast<double>(n);
-    if (s == 0) G(2, 1) = 1.0;
-    if (s + 1 == n) G(5, 2) = 1.0;
-    return G;
-}
 } // namespace
 
 SegmentedPlasticityLaw::SegmentedPlasticityLaw(const SectionSpec& section, double L0, int segments,
                                                int integration_points)
     : L0_(L0), segment_length_(L0 / segments), EA_(section.E * section.area), EI_(section.E * section.inertia) {
-    const std::size_t n = static_cast<std::size_t>(segments);
+    const std::size_t n = static_cast<std::size_t>(segments), m = n - 1;
+    const double l = segment_length_;
     segments_.reserve(n);
-    for (std::size_t s = 0; s < n; ++s) segments_.emplace_back(section, segment_length_, integration_points);
+    for (std::size_t s = 0; s < n; ++s) segments_.emplace_back(section, l, integration_points);
+    // The axial motion is shared in proportion (one strain per element); θ_i and θ_j act on the
+    // first and the last segment; an inner node's (w, θ) on the segments either side of it.
+    basic_map_.assign(n, Eigen::Matrix3d::Zero());
+    for (std::size_t s = 0; s < n; ++s) basic_map_[s](0, 0) = 1.0 / static_cast<double>(n);
+    basic_map_[0](1, 1) = 1.0;
+    basic_map_[n - 1](2, 2) = 1.0;
+    near_ << 0.0, 0.0, 1.0 / l, 1.0, 1.0 / l, 0.0;
+    far_ << 0.0, 0.0, -1.0 / l, 0.0, -1.0 / l, 1.0;
     segment_forces_.resize(n);
     segment_tangents_.resize(n);
-    pivot_inverse_.resize(n - 1);
-    multiplier_.resize(n - 1);
-    upper_.resize(n - 1);
-    inner_t_ = inner_c_ = std::vector<Inner>(n - 1, Inner::Zero());
+    pivot_inverse_.resize(m);
+    multiplier_.resize(m);
+    upper_.resize(m);
+    coupling_.resize(m);
+    solved_.resize(m);
+    residual_.resize(m);
+    inner_t_ = inner_c_ = std::vector<Inner>(m, Inner::Zero());
     // The elastic condensation, the warm start of the first trial: evaluated at rest.
     evaluate(Eigen::Vector3d::Zero(), inner_t_);
-    std::vector<Inner> forces;
     Eigen::Vector3d q;
     Eigen::Matrix3d k;
-    condense(forces, q, k);
+    condense(residual_, q, k);
     condensation_c_ = condensation_t_;
     for (DistributedPlasticityLaw& s : segments_) s.revert();
 }
 
 void SegmentedPlasticityLaw::evaluate(const Eigen::Vector3d& e, const std::vector<Inner>& inner) {
     const std::size_t n = segments_.size();
-    const double l = segment_length_;
-    // Segment deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l, from its nodes'
-    // (u, w, θ) at a and b.
-    Eigen::Matrix<double, 3, 6> T = Eigen::Matrix<double, 3, 6>::Zero();
-    T(0, 0) = -1.0;
-    T(0, 3) = 1.0;
-    T(1, 1) = T(2, 1) = 1.0 / l;
-    T(1, 4) = T(2, 4) = -1.0 / l;
-    T(1, 2) = 1.0;
-    T(2, 5) = 1.0;
     for (std::size_t s = 0; s < n; ++s) {
-        Vector6 d = basic_map(s, n) * e;
-        if (s > 0) d.segment<2>(1) = inner[s - 1];
-        if (s + 1 < n) d.segment<2>(4) = inner[s];
-        Eigen::Vector3d q;
-        Eigen::Matrix3d k;
-        segments_[s].trial(T * d, q, k);
-        segment_forces_[s].noalias() = T.transpose() * q;
-        segment_tangents_[s].noalias() = T.transpose() * k * T;
+        Eigen::Vector3d d = basic_map_[s] * e;
+        if (s > 0) d.noalias() += near_ * inner[s - 1];
+        if (s + 1 < n) d.noalias() += far_ * inner[s];
+        segments_[s].trial(d, segment_forces_[s], segment_tangents_[s]);
     }
 }
 
@@ -78,42 +65,35 @@ void SegmentedPlasticityLaw::solve_inner(std::vector<Block>& b) const {
 
 void SegmentedPlasticityLaw::condense(std::vector<Inner>& inner_forces, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     const std::size_t n = segments_.size(), m = n - 1;
-    const std::vector<Vector6>& f = segment_forces_;
-    const std::vector<Matrix6>& S = segment_tangents_;
-    // Basic forces and K_ee, and each segment's stiffness against the basic deformations.
+    const std::vector<Eigen::Vector3d>& f = segment_forces_;
+    const std::vector<Eigen::Matrix3d>& S = segment_tangents_;
+    // Basic forces and K_ee.
     q.setZero();
     k.setZero();
-    std::vector<Eigen::Matrix<double, 6, 3>> SG(n);
     for (std::size_t s = 0; s < n; ++s) {
-        const Eigen::Matrix<double, 6, 3> G = basic_map(s, n);
-        q.noalias() += G.transpose() * f[s];
-        SG[s].noalias() = S[s] * G;
-        k.noalias() += G.transpose() * SG[s];
+        q.noalias() += basic_map_[s].transpose() * f[s];
+        k.noalias() += basic_map_[s].transpose() * S[s] * basic_map_[s];
     }
     // Inner node i (element node i + 1) is the far node of segment i and the near one of
-    // segment i + 1: its (w, θ) are local DOFs 4, 5 of the first and 1, 2 of the second.
+    // segment i + 1. Block LDLᵀ of the chain: pivot_i = D_i − C_{i−1}ᵀ pivot_{i−1}⁻¹ C_{i−1}.
     inner_forces.resize(m);
-    std::vector<Coupling> coupling(m);
     for (std::size_t i = 0; i < m; ++i) {
-        inner_forces[i] = f[i].segment<2>(4) + f[i + 1].segment<2>(1);
-        coupling[i] = SG[i].block<2, 3>(4, 0) + SG[i + 1].block<2, 3>(1, 0);
-    }
-    // Block LDLᵀ of the chain: pivot_i = D_i − C_{i−1}ᵀ pivot_{i−1}⁻¹ C_{i−1}.
-    for (std::size_t i = 0; i < m; ++i) {
-        Eigen::Matrix2d pivot = S[i].block<2, 2>(4, 4) + S[i + 1].block<2, 2>(1, 1);
+        inner_forces[i].noalias() = far_.transpose() * f[i] + near_.transpose() * f[i + 1];
+        coupling_[i].noalias() = far_.transpose() * S[i] * basic_map_[i] + near_.transpose() * S[i + 1] * basic_map_[i + 1];
+        Eigen::Matrix2d pivot = far_.transpose() * S[i] * far_ + near_.transpose() * S[i + 1] * near_;
         if (i > 0) {
-            multiplier_[i] = upper_[i - 1].transpose() * pivot_inverse_[i - 1];
-            pivot -= multiplier_[i] * upper_[i - 1];
+            multiplier_[i].noalias() = upper_[i - 1].transpose() * pivot_inverse_[i - 1];
+            pivot.noalias() -= multiplier_[i] * upper_[i - 1];
         }
         pivot_inverse_[i] = pivot.inverse();
-        if (i + 1 < m) upper_[i] = S[i + 1].block<2, 2>(1, 4);
+        if (i + 1 < m) upper_[i].noalias() = near_.transpose() * S[i + 1] * far_;
     }
-    std::vector<Coupling> solved = coupling;
-    solve_inner(solved);
+    solved_ = coupling_;
+    solve_inner(solved_);
     condensation_t_.resize(m);
     for (std::size_t i = 0; i < m; ++i) {
-        condensation_t_[i] = -solved[i];
-        k.noalias() -= coupling[i].transpose() * solved[i];
+        condensation_t_[i] = -solved_[i];
+        k.noalias() -= coupling_[i].transpose() * solved_[i];
     }
 }
 
@@ -127,12 +107,12 @@ double SegmentedPlasticityLaw::inner_residual(const std::vector<Inner>& r) const
 void SegmentedPlasticityLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     // Start from the last trial state moved along its condensed tangent: exact while every
     // section stays on its branch, so an elastic element needs one evaluation.
-    std::vector<Inner> inner = inner_t_;
-    for (std::size_t i = 0; i < inner.size(); ++i) inner[i] += condensation_t_[i] * (e - e_t_);
-    std::vector<Inner> r;
+    std::vector<Inner>& inner = inner_t_;
+    for (std::size_t i = 0; i < inner.size(); ++i) inner[i].noalias() += condensation_t_[i] * (e - e_t_);
+    e_t_ = e;
     evaluate(e, inner);
-    condense(r, q, k);
-    double residual = inner_residual(r);
+    condense(residual_, q, k);
+    double residual = inner_residual(residual_);
     // Against the end forces, and against the elastic forces of the deformation, which set
     // the round-off of every force here.
     const double scale = std::abs(q[0]) + (std::abs(q[1]) + std::abs(q[2])) / segment_length_ +
@@ -140,16 +120,17 @@ void SegmentedPlasticityLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q,
     inner_converged_ = residual <= inner_tolerance * scale;
     // Newton on the inner nodes with a backtracking line search: the fibres' piecewise-linear
     // law can make a full step jump across a kink, and a shortened one lands between.
+    // A state whose inner nodes are not in equilibrium is not accepted (states_consistent).
     for (int it = 0; it < max_element_iterations && !inner_converged_; ++it) {
-        std::vector<Inner> step = r;
-        solve_inner(step);
-        const std::vector<Inner> start = inner;
+        step_ = residual_;
+        solve_inner(step_);
+        start_ = inner;
         double length = 1.0;
         for (int cut = 0;; ++cut) {
-            for (std::size_t i = 0; i < inner.size(); ++i) inner[i] = start[i] - length * step[i];
+            for (std::size_t i = 0; i < inner.size(); ++i) inner[i] = start_[i] - length * step_[i];
             evaluate(e, inner);
-            condense(r, q, k);
-            const double next = inner_residual(r);
+            condense(residual_, q, k);
+            const double next = inner_residual(residual_);
             if (next < residual || cut == 8 || !std::isfinite(next)) {
                 residual = next;
                 break;
@@ -159,9 +140,6 @@ void SegmentedPlasticityLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q,
         if (!std::isfinite(residual)) break;
         inner_converged_ = residual <= inner_tolerance * scale;
     }
-    // A state whose inner nodes are not in equilibrium is not accepted (states_consistent).
-    e_t_ = e;
-    inner_t_ = inner;
 }
 
 void SegmentedPlasticityLaw::commit() {

@@ -45,10 +45,9 @@ public:
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<SegmentedPlasticityLaw>(*this); }
 
 private:
-    using Vector6 = Eigen::Matrix<double, 6, 1>;
-    using Matrix6 = Eigen::Matrix<double, 6, 6>;
     using Inner = Eigen::Vector2d;                  // (w, θ) of an inner node
     using Coupling = Eigen::Matrix<double, 2, 3>;   // an inner node against [u_l, θ_i, θ_j]
+    using InnerMap = Eigen::Matrix<double, 3, 2>;   // a segment's deformations per inner node motion
 
     // Evaluates every segment at e and the inner nodes' motion (2 per inner node).
     void evaluate(const Eigen::Vector3d& e, const std::vector<Inner>& inner);
@@ -64,10 +63,16 @@ private:
     double L0_, segment_length_;
     double EA_, EI_; // elastic, for the scale of the inner residual test
     std::vector<DistributedPlasticityLaw> segments_;
-    std::vector<Vector6> segment_forces_;   // over the segment's two nodes (u, w, θ each)
-    std::vector<Matrix6> segment_tangents_;
-    // Block LDLᵀ of K_ii: pivots' inverses, multipliers, upper blocks.
+    // Segment s's basic deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l, are
+    // basic_map_[s]·e + near·(w, θ)_a + far·(w, θ)_b.
+    std::vector<Eigen::Matrix3d> basic_map_;
+    InnerMap near_, far_;
+    std::vector<Eigen::Vector3d> segment_forces_;    // each segment's basic forces
+    std::vector<Eigen::Matrix3d> segment_tangents_;  // and their tangent
+    // Block LDLᵀ of K_ii: pivots' inverses, multipliers, upper blocks; and scratch.
     std::vector<Eigen::Matrix2d> pivot_inverse_, multiplier_, upper_;
+    std::vector<Coupling> coupling_, solved_;
+    std::vector<Inner> residual_, step_, start_;
 
     Eigen::Vector3d e_t_ = Eigen::Vector3d::Zero(), e_c_ = Eigen::Vector3d::Zero();
     std::vector<Inner> inner_t_, inner_c_;
