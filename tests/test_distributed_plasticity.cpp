@@ -290,8 +290,10 @@ TEST_CASE("Hinge and distributed rings agree before first yield", "[distributed]
 TEST_CASE("Segments inside an element resolve the plastic zone as a finer mesh does", "[distributed]") {
     // The tip-loaded cantilever of the second-order test (plastic zone over the inner 26 % of
     // the span): n elements of s segments, whose inner nodes are condensed by element
-    // iterations, against n·s plain elements. At δ/L ≈ 1e-4 the only difference is the
-    // segments' linear kinematics inside the co-rotational frame, of order (δ/L)².
+    // iterations, against n·s plain elements. At δ/L ≈ 1e-4 the differences are the segments'
+    // linear kinematics inside the co-rotational frame, of order (δ/L)², and their parallel
+    // elastic stiffness of 1e-6 (the plain law's is 1e-9), which stiffens the plastic zone by
+    // about 1e-6 of the elastic response: measured 1.7e-6 of the tip deflection.
     const double E = 2e11, fy = 250.0, My = fy * 10.0 * 20.0 * 20.0 / 6.0, P = 1.35 * My / 1000.0;
     auto tip = [&](int elements, int segments) {
         std::string scene = tip_loaded_rectangle_cantilever(E, fy, "", elements, P);
@@ -303,6 +305,6 @@ TEST_CASE("Segments inside an element resolve the plastic zone as a finer mesh d
     for (const auto& [elements, segments] : {std::pair{2, 2}, std::pair{2, 4}, std::pair{4, 4}, std::pair{1, 8}}) {
         const double segmented = tip(elements, segments), plain = tip(elements * segments, 1);
         CAPTURE(elements, segments, segmented, plain);
-        CHECK(segmented == Approx(plain).epsilon(1e-7));
+        CHECK(segmented == Approx(plain).epsilon(1e-5));
     }
 }

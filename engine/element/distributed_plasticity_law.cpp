@@ -2,9 +2,10 @@
 
 namespace plastica {
 
-DistributedPlasticityLaw::DistributedPlasticityLaw(const SectionSpec& section, double L0, int integration_points)
+DistributedPlasticityLaw::DistributedPlasticityLaw(const SectionSpec& section, double L0, int integration_points,
+                                                   double regularisation)
     : L0_(L0),
-      k_regular_(regularising_stiffness * elastic_basic_stiffness(section.E * section.area, section.E * section.inertia, L0)) {
+      k_regular_(regularisation * elastic_basic_stiffness(section.E * section.area, section.E * section.inertia, L0)) {
     const FibreSection prototype(section);
     for (const QuadraturePoint& p : gauss_legendre(integration_points))
         points_.push_back({p, prototype, (6.0 * p.xi - 4.0) / L0, (6.0 * p.xi - 2.0) / L0, {}, {}});

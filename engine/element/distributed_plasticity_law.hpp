@@ -23,7 +23,9 @@ class DistributedPlasticityLaw final : public BasicLaw {
 public:
     static constexpr double regularising_stiffness = 1e-9;
 
-    DistributedPlasticityLaw(const SectionSpec& section, double L0, int integration_points);
+    // regularisation: the parallel elastic stiffness, as a fraction of the member's.
+    DistributedPlasticityLaw(const SectionSpec& section, double L0, int integration_points,
+                             double regularisation = regularising_stiffness);
 
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     void commit() override;
