@@ -18,6 +18,14 @@ inline std::string plastic_beam_header(const std::string& plasticity) {
            "fibres = 10\nplasticity = \"" + plasticity + "\"\n";
 }
 
+// A fixed-fixed beam 2000 long of section "s" under a central point load (elements: a count,
+// or a placeholder the caller replaces).
+inline std::string fixed_fixed_beam(const std::string& elements) {
+    return "[[line]]\nstart = [0.0, 0.0]\nend = [2000.0, 0.0]\nelements = " + elements +
+           "\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
+           "[[support]]\nat = [2000.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n";
+}
+
 // Displacement control of one DOF ("ux" pushes +x, "uy" pushes −y) to a target.
 inline std::string displacement_control(double x, double y, const std::string& dof, double increment, double target) {
     return "[analysis]\nscheme = \"displacement_control\"\nincrement = " + num(increment) +

@@ -186,22 +186,8 @@ TEST_CASE("Distributed plasticity: collapse loads of plastic theory, approached 
     const double L = 2000.0;
     auto last_load = [](const Run& r) { return r.steps.back().load; };
     SECTION("fixed-fixed beam, central load: 8 Mp / L") {
-        check(collapse_study(header + R"(
-[[line]]
-start = [0.0, 0.0]
-end = [2000.0, 0.0]
-elements = N
-section = "s"
-[[support]]
-at = [0.0, 0.0]
-fix = ["ux", "uy", "rz"]
-[[support]]
-at = [2000.0, 0.0]
-fix = ["ux", "uy", "rz"]
-[[load]]
-at = [1000.0, 0.0]
-fy = -1.0
-)" + control(1000.0, 0.0, "uy", 0.01, 0.3), 16, last_load), 8.0 * Mp / L);
+        check(collapse_study(header + fixed_fixed_beam("N") + control(1000.0, 0.0, "uy", 0.01, 0.3), 16, last_load),
+              8.0 * Mp / L);
     }
     SECTION("propped cantilever, central load: 6 Mp / L") {
         check(collapse_study(header + R"(
@@ -230,22 +216,8 @@ TEST_CASE("Segments bring collapse loads down as finer elements do, at first ord
     // segments, 1.9 % with 8; sections at the segment ends, Gauss–Lobatto, do no better).
     const double L = 2000.0, exact = 8.0 * Mp / L;
     auto plateau = [&](int segments) {
-        const Run r = run_scene(header + "segments = " + std::to_string(segments) + R"(
-[[line]]
-start = [0.0, 0.0]
-end = [2000.0, 0.0]
-elements = 8
-section = "s"
-[[support]]
-at = [0.0, 0.0]
-fix = ["ux", "uy", "rz"]
-[[support]]
-at = [2000.0, 0.0]
-fix = ["ux", "uy", "rz"]
-[[load]]
-at = [1000.0, 0.0]
-fy = -1.0
-)" + control(1000.0, 0.0, "uy", 0.01, 0.3));
+        const Run r = run_scene(header + "segments = " + std::to_string(segments) + "\n" + fixed_fixed_beam("8") +
+                                control(1000.0, 0.0, "uy", 0.01, 0.3));
         REQUIRE(r.summary.status == RunStatus::completed);
         return r.steps.back().load / exact - 1.0;
     };

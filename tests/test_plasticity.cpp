@@ -21,22 +21,7 @@ std::string control(double x, double y, const std::string& dof, double increment
 
 TEST_CASE("A fixed-fixed beam under a central load collapses at 8 Mp / L", "[plasticity]") {
     const double L = 2000.0;
-    const Run r = run_scene(header + R"(
-[[line]]
-start = [0.0, 0.0]
-end = [2000.0, 0.0]
-elements = 8
-section = "s"
-[[support]]
-at = [0.0, 0.0]
-fix = ["ux", "uy", "rz"]
-[[support]]
-at = [2000.0, 0.0]
-fix = ["ux", "uy", "rz"]
-[[load]]
-at = [1000.0, 0.0]
-fy = -1.0
-)" + control(1000.0, 0.0, "uy", 0.01, 0.1));
+    const Run r = run_scene(header + fixed_fixed_beam("8") + control(1000.0, 0.0, "uy", 0.01, 0.1));
     REQUIRE(r.summary.status == RunStatus::completed);
     // The mechanism forms near δ = 0.04; at δ = 0.1 the load sits on the plateau. (Further on,
     // the restrained axial stretch raises N and lowers M_p(N): membrane action of the model.)
