@@ -59,8 +59,8 @@ struct RunSummary {
     int steps = 0;
     int iterations = 0;
     int cut_steps = 0;
-    // Converged steps of adaptive increments taken again smaller because a hinge section's
-    // stiffness fell too far within them (not counted as cut).
+    // Converged steps of adaptive increments taken again smaller because they carried a hinge
+    // section too far into its yielding range (not counted as cut).
     int refined_steps = 0;
     int accepted_by_residual = 0;
     int accepted_by_stagnation = 0;

@@ -137,9 +137,9 @@ bool StructuralSystem::hinge_states_consistent() const {
 }
 
 double StructuralSystem::trial_yield_advance() const {
-    double drop = 0.0;
-    for (const CorotationalBeam& e : elements_) drop = std::max(drop, e.trial_yield_advance());
-    return drop;
+    double advance = 0.0;
+    for (const CorotationalBeam& e : elements_) advance = std::max(advance, e.trial_yield_advance());
+    return advance;
 }
 
 Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {
