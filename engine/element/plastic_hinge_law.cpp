@@ -258,14 +258,17 @@ void PlasticHingeLaw::commit() {
 }
 
 double PlasticHingeLaw::trial_yield_advance() const {
+    // |M|/M_p(N) of an end in a state, against the capacity on the side it bends to.
+    auto utilisation = [&](const Eigen::Vector3d& q, int end, double& capacity) {
+        const double m = section_moment(q, end);
+        capacity = sections_[end].hinge_moment_capacity(q[0], m >= 0.0 ? 1.0 : -1.0);
+        return capacity > 0.0 ? std::min(std::abs(m) / capacity, 1.0) : 0.0;
+    };
     double advance = 0.0;
     for (int end = 0; end < 2; ++end) {
-        const double m_t = std::abs(section_moment(q_t_, end));
-        const double cap_t = sections_[end].hinge_moment_capacity(q_t_[0], section_moment(q_t_, end) >= 0.0 ? 1.0 : -1.0);
-        const double cap_c = sections_[end].hinge_moment_capacity(q_c_[0], section_moment(q_c_, end) >= 0.0 ? 1.0 : -1.0);
+        double cap_t = 0.0, cap_c = 0.0;
+        const double u_t = utilisation(q_t_, end, cap_t), u_c = utilisation(q_c_, end, cap_c);
         if (!(cap_t > 0.0) || !(cap_c > 0.0)) continue;
-        const double u_t = std::min(m_t / cap_t, 1.0);
-        const double u_c = std::min(std::abs(section_moment(q_c_, end)) / cap_c, 1.0);
         const double u_y = std::clamp(sections_[end].first_yield_moment(q_t_[0]) / cap_t, 0.0, 1.0);
         advance = std::max(advance, u_t - std::max(u_c, u_y));
     }
