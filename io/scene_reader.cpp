@@ -157,11 +157,17 @@ private:
                 s.plasticity = Plasticity::distributed;
                 s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
                 s.segments = r.integer_or("segments", default_segments, 1, 16);
+                if (r.has("segment_grading")) {
+                    if (s.segments < 3) r.fail("segment_grading", "grading needs segments = 3 or more");
+                    s.segment_grading = r.number("segment_grading");
+                    if (!(s.segment_grading >= 0.25 && s.segment_grading <= 4.0))
+                        r.fail("segment_grading", "must lie between 0.25 and 4 (each segment's length over its neighbour's nearer the element end)");
+                }
             } else {
                 if (r.has("integration_points"))
                     r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
-                if (r.has("segments"))
-                    r.fail("segments", "only a section with plasticity = \"distributed\" has segments");
+                for (const char* key : {"segments", "segment_grading"})
+                    if (r.has(key)) r.fail(key, "only a section with plasticity = \"distributed\" has segments");
                 s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
             }
             if (s.plasticity == Plasticity::hinges && hardens)
@@ -171,7 +177,7 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
-            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "integration_points", "segments"};
+            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "integration_points", "segments", "segment_grading"};
             keys.insert(keys.end(), shape.keys.begin(), shape.keys.end());
             r.finish(keys);
             section_index_[name] = static_cast<int>(model_.sections.size());

@@ -40,6 +40,7 @@ int set_plasticity(toml::table& root, const std::string& plasticity) {
                 if (plasticity != "distributed") {
                     t->erase("integration_points");
                     t->erase("segments");
+                    t->erase("segment_grading");
                 }
                 ++changed;
             }

@@ -26,6 +26,47 @@ inline std::string fixed_fixed_beam(const std::string& elements) {
            "[[support]]\nat = [2000.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n";
 }
 
+// The same span propped at its right end (uy only).
+inline std::string propped_cantilever(const std::string& elements) {
+    return "[[line]]\nstart = [0.0, 0.0]\nend = [2000.0, 0.0]\nelements = " + elements +
+           "\nsection = \"s\"\n[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
+           "[[support]]\nat = [2000.0, 0.0]\nfix = [\"uy\"]\n[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n";
+}
+
+// A fixed-base portal frame of section "s", 4000 high and 8000 wide (4, 8 and 4 elements),
+// under H = V = λ: H at the left joint, V at mid-span. Beam mechanism 8Mp/L = Mp/1000, sway
+// 4Mp/h = Mp/1000, combined λ(H h + V L/2) = 6 Mp → λ = 0.75 Mp/1000, which governs.
+inline std::string portal_frame() {
+    return R"([[line]]
+start = [0.0, 0.0]
+end = [0.0, 4000.0]
+elements = 4
+section = "s"
+[[line]]
+start = [0.0, 4000.0]
+end = [8000.0, 4000.0]
+elements = 8
+section = "s"
+[[line]]
+start = [8000.0, 4000.0]
+end = [8000.0, 0.0]
+elements = 4
+section = "s"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[support]]
+at = [8000.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[load]]
+at = [0.0, 4000.0]
+fx = 1.0
+[[load]]
+at = [4000.0, 4000.0]
+fy = -1.0
+)";
+}
+
 // Displacement control of one DOF ("ux" pushes +x, "uy" pushes −y) to a target.
 inline std::string displacement_control(double x, double y, const std::string& dof, double increment, double target) {
     return "[analysis]\nscheme = \"displacement_control\"\nincrement = " + num(increment) +

@@ -48,7 +48,7 @@ std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, HingeEnds en
     switch (s.plasticity) {
     case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, ends_served);
     case Plasticity::distributed:
-        if (s.segments > 1) return std::make_unique<SegmentedPlasticityLaw>(s, L0, s.segments, s.integration_points);
+        if (s.segments > 1) return std::make_unique<SegmentedPlasticityLaw>(s, L0, s.segments, s.integration_points, s.segment_grading);
         return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
     case Plasticity::none: break;
     }

@@ -18,20 +18,31 @@ constexpr double segment_regularisation = 1e-6;
 } // namespace
 
 SegmentedPlasticityLaw::SegmentedPlasticityLaw(const SectionSpec& section, double L0, int segments,
-                                               int integration_points)
+                                               int integration_points, double grading)
     : L0_(L0), segment_length_(L0 / segments), EA_(section.E * section.area), EI_(section.E * section.inertia) {
     const std::size_t n = static_cast<std::size_t>(segments), m = n - 1;
-    const double l = segment_length_;
+    // Lengths grow by `grading` from either end toward the middle.
+    std::vector<double> length(n);
+    double total = 0.0;
+    for (std::size_t s = 0; s < n; ++s) total += length[s] = std::pow(grading, static_cast<double>(std::min(s, n - 1 - s)));
     segments_.reserve(n);
-    for (std::size_t s = 0; s < n; ++s) segments_.emplace_back(section, l, integration_points, segment_regularisation);
-    // The axial motion is shared in proportion (one strain per element); θ_i and θ_j act on the
-    // first and the last segment; an inner node's (w, θ) on the segments either side of it.
+    bounds_.assign(1, 0.0);
+    near_.resize(n);
+    far_.resize(n);
+    // The axial motion is shared in proportion to length (one strain per element); θ_i and
+    // θ_j act on the first and the last segment; an inner node's (w, θ) on the segments either
+    // side of it.
     basic_map_.assign(n, Eigen::Matrix3d::Zero());
-    for (std::size_t s = 0; s < n; ++s) basic_map_[s](0, 0) = 1.0 / static_cast<double>(n);
+    for (std::size_t s = 0; s < n; ++s) {
+        const double l = length[s] * L0 / total;
+        segments_.emplace_back(section, l, integration_points, segment_regularisation);
+        bounds_.push_back(bounds_.back() + l);
+        basic_map_[s](0, 0) = l / L0;
+        near_[s] << 0.0, 0.0, 1.0 / l, 1.0, 1.0 / l, 0.0;
+        far_[s] << 0.0, 0.0, -1.0 / l, 0.0, -1.0 / l, 1.0;
+    }
     basic_map_[0](1, 1) = 1.0;
     basic_map_[n - 1](2, 2) = 1.0;
-    near_ << 0.0, 0.0, 1.0 / l, 1.0, 1.0 / l, 0.0;
-    far_ << 0.0, 0.0, -1.0 / l, 0.0, -1.0 / l, 1.0;
     segment_forces_.resize(n);
     segment_tangents_.resize(n);
     pivot_inverse_.resize(m);
@@ -54,8 +65,8 @@ void SegmentedPlasticityLaw::evaluate(const Eigen::Vector3d& e, const std::vecto
     const std::size_t n = segments_.size();
     for (std::size_t s = 0; s < n; ++s) {
         Eigen::Vector3d d = basic_map_[s] * e;
-        if (s > 0) d.noalias() += near_ * inner[s - 1];
-        if (s + 1 < n) d.noalias() += far_ * inner[s];
+        if (s > 0) d.noalias() += near_[s] * inner[s - 1];
+        if (s + 1 < n) d.noalias() += far_[s] * inner[s];
         segments_[s].trial(d, segment_forces_[s], segment_tangents_[s]);
     }
 }
@@ -83,15 +94,16 @@ void SegmentedPlasticityLaw::condense(std::vector<Inner>& inner_forces, Eigen::V
     // segment i + 1. Block LDLᵀ of the chain: pivot_i = D_i − C_{i−1}ᵀ pivot_{i−1}⁻¹ C_{i−1}.
     inner_forces.resize(m);
     for (std::size_t i = 0; i < m; ++i) {
-        inner_forces[i].noalias() = far_.transpose() * f[i] + near_.transpose() * f[i + 1];
-        coupling_[i].noalias() = far_.transpose() * S[i] * basic_map_[i] + near_.transpose() * S[i + 1] * basic_map_[i + 1];
-        Eigen::Matrix2d pivot = far_.transpose() * S[i] * far_ + near_.transpose() * S[i + 1] * near_;
+        const InnerMap &far = far_[i], &near = near_[i + 1];
+        inner_forces[i].noalias() = far.transpose() * f[i] + near.transpose() * f[i + 1];
+        coupling_[i].noalias() = far.transpose() * S[i] * basic_map_[i] + near.transpose() * S[i + 1] * basic_map_[i + 1];
+        Eigen::Matrix2d pivot = far.transpose() * S[i] * far + near.transpose() * S[i + 1] * near;
         if (i > 0) {
             multiplier_[i].noalias() = upper_[i - 1].transpose() * pivot_inverse_[i - 1];
             pivot.noalias() -= multiplier_[i] * upper_[i - 1];
         }
         pivot_inverse_[i] = pivot.inverse();
-        if (i + 1 < m) upper_[i].noalias() = near_.transpose() * S[i + 1] * far_;
+        if (i + 1 < m) upper_[i].noalias() = near.transpose() * S[i + 1] * far_[i + 1];
     }
     solved_ = coupling_;
     solve_inner(solved_);
@@ -129,10 +141,10 @@ void SegmentedPlasticityLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q,
     for (int it = 0; it < max_element_iterations && !inner_converged_; ++it) {
         step_ = residual_;
         solve_inner(step_);
-        start_ = inner;
+        line_start_ = inner;
         double length = 1.0;
         for (int cut = 0;; ++cut) {
-            for (std::size_t i = 0; i < inner.size(); ++i) inner[i] = start_[i] - length * step_[i];
+            for (std::size_t i = 0; i < inner.size(); ++i) inner[i] = line_start_[i] - length * step_[i];
             evaluate(e, inner);
             condense(residual_, q, k);
             const double next = inner_residual(residual_);
@@ -164,10 +176,9 @@ void SegmentedPlasticityLaw::revert() {
 
 std::vector<SectionReport> SegmentedPlasticityLaw::sections() const {
     std::vector<SectionReport> out;
-    const double n = static_cast<double>(segments_.size());
     for (std::size_t s = 0; s < segments_.size(); ++s)
         for (SectionReport r : segments_[s].sections()) {
-            r.xi = (static_cast<double>(s) + r.xi) / n;
+            r.xi = (bounds_[s] + r.xi * (bounds_[s + 1] - bounds_[s])) / L0_;
             out.push_back(r);
         }
     return out;

@@ -13,9 +13,14 @@
 // flow at the squash load (catenary action) it leaves their shares of the flow undetermined
 // and the element iterations cycle. With one segment this is the plain law.
 //
-// In the basic frame, nodes k = 0 … n at x = k·L0/n carry (u_k, w_k, θ_k) with u_k = (k/n)·u_l,
+// Segments may be graded toward the element ends, where the moment of a frame peaks at its
+// joints, supports and point loads: each segment is `grading` times as long as its neighbour
+// nearer the end. The sections next to a hinge then sit closer to it, and the collapse load's
+// first-order excess, proportional to the length of the segment at the hinge, shrinks with it.
+//
+// In the basic frame, nodes k = 0 … n at x_k carry (u_k, w_k, θ_k) with u_k = (x_k/L0)·u_l,
 // w_0 = w_n = 0, θ_0 = θ_i, θ_n = θ_j; the inner nodes' (w, θ) are the unknowns. Segment s
-// between nodes a and b has basic deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l.
+// between nodes a and b has basic deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l_s.
 // Element iterations (Newton with a backtracking line search, warm-started from the last state
 // along the condensed tangent) solve the inner nodes' equilibrium; the basic forces are the
 // work-conjugates of [u_l, θ_i, θ_j] and the tangent is the condensed stiffness
@@ -31,7 +36,7 @@ namespace plastica {
 
 class SegmentedPlasticityLaw final : public BasicLaw {
 public:
-    SegmentedPlasticityLaw(const SectionSpec& section, double L0, int segments, int integration_points);
+    SegmentedPlasticityLaw(const SectionSpec& section, double L0, int segments, int integration_points, double grading);
 
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     void commit() override;
@@ -60,19 +65,20 @@ private:
     // The inner nodes' force norm (moments over the segment length).
     double inner_residual(const std::vector<Inner>& r) const;
 
-    double L0_, segment_length_;
+    double L0_, segment_length_; // the element's, and its segments' mean length
     double EA_, EI_; // elastic, for the scale of the inner residual test
     std::vector<DistributedPlasticityLaw> segments_;
-    // Segment s's basic deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l, are
-    // basic_map_[s]·e + near·(w, θ)_a + far·(w, θ)_b.
+    std::vector<double> bounds_;                    // the segments' ends, from node i
+    // Segment s's basic deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l_s, are
+    // basic_map_[s]·e + near_[s]·(w, θ)_a + far_[s]·(w, θ)_b.
     std::vector<Eigen::Matrix3d> basic_map_;
-    InnerMap near_, far_;
+    std::vector<InnerMap> near_, far_;
     std::vector<Eigen::Vector3d> segment_forces_;    // each segment's basic forces
     std::vector<Eigen::Matrix3d> segment_tangents_;  // and their tangent
     // Block LDLᵀ of K_ii: pivots' inverses, multipliers, upper blocks; and scratch.
     std::vector<Eigen::Matrix2d> pivot_inverse_, multiplier_, upper_;
     std::vector<Coupling> coupling_, solved_;
-    std::vector<Inner> residual_, step_, start_;
+    std::vector<Inner> residual_, step_, line_start_;
 
     Eigen::Vector3d e_t_ = Eigen::Vector3d::Zero(), e_c_ = Eigen::Vector3d::Zero();
     std::vector<Inner> inner_t_, inner_c_;

@@ -67,6 +67,7 @@ struct SectionSpec {
     Plasticity plasticity = Plasticity::none; // hinges or distributed when steel is present
     int integration_points = 0;     // distributed: Gauss–Legendre points per segment
     int segments = 1;               // distributed: segments per element (inner nodes condensed)
+    double segment_grading = 1.0;   // distributed: each segment's length over its outer neighbour's
     double mass_per_length = 0.0;   // density × area, for self weight
 };
 

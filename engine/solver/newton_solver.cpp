@@ -7,6 +7,12 @@
 
 namespace plastica {
 
+namespace {
+// Corrections larger than this times the step so far (the first correction, or the start from
+// a guess) end the attempt as diverged.
+constexpr double max_correction_growth = 100.0;
+} // namespace
+
 const char* to_string(Acceptance rule) {
     switch (rule) {
     case Acceptance::none: return "none";
@@ -40,6 +46,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
     }
     const int first_constraint_iteration = guess ? 1 : 0;
     double last_correction = 0.0;
+    double first_correction = 0.0;
     double damping = 1.0;
     std::vector<double> history; // residual norms of the iterations so far
     double lowest = std::numeric_limits<double>::infinity(); // of the corrections' residuals
@@ -158,6 +165,15 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             du *= damping;
             step_dl *= damping;
         }
+        // A correction a hundred times the step so far has found a mechanism the iterate
+        // created (a section flipped across its yield surface, a spurious hinge): following it
+        // lands on another equilibrium branch far away. A smaller increment costs less.
+        const double correction = du.norm();
+        if (it == 0) first_correction = correction;
+        if (it >= 1 && correction > max_correction_growth * std::max(first_correction, result.increment.norm())) {
+            result.failure = NewtonFailure::diverged;
+            return result;
+        }
         problem.move(du, step_dl);
         if (!problem.evaluate(it + 1, release)) {
             result.failure = NewtonFailure::non_finite;
@@ -165,7 +181,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         }
         result.increment += du;
         result.load_change += step_dl;
-        last_correction = du.norm();
+        last_correction = correction;
     }
     result.failure = problem.settled() ? NewtonFailure::iteration_limit : NewtonFailure::unsettled;
     return result;
