@@ -1,4 +1,4 @@
-// PNG files through VTK's own PNG writer and reader. Writing goes to a temporary name and a
+// PNG files: written through libpng (settings for fast frames), read through VTK's reader. Writing goes to a temporary name and a
 // rename, so no half-written PNG ever has its final name.
 #pragma once
 

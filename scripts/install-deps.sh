@@ -4,7 +4,7 @@
 # apt-get runs with --no-remove, so a conflict stops the install with an explanation instead.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libboost-program-options-dev
-          libvtk9-dev libosmesa6-dev libglew-dev fonts-dejavu-core catch2 libbenchmark-dev ffmpeg parallel "$@")
+          libvtk9-dev libpng-dev libosmesa6-dev libglew-dev fonts-dejavu-core catch2 libbenchmark-dev ffmpeg parallel "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
