@@ -139,7 +139,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         result.negative_pivots_seen = std::max(result.negative_pivots_seen, solver.negative_pivots());
         const Eigen::VectorXd du_r = solver.solve(residual);
         const Eigen::VectorXd du_f = solver.solve(load);
-        const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f);
+        const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f, solver.negative_pivots());
         if (!std::isfinite(dl)) {
             result.failure = NewtonFailure::no_constraint_root;
             return result;
