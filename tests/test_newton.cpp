@@ -106,7 +106,7 @@ TEST_CASE("Newton with arc length passes the limit point of a two-DOF snap-throu
     NewtonSettings settings;
     settings.residual_tolerance = 1e-10;
     settings.displacement_tolerance = 1e-10;
-    ArcLengthMemory previous;
+    Eigen::VectorXd previous;
     const double v_limit = 1.0 - std::sqrt(1.0 - 2.2 / 3.0);
     bool passed_limit = false, negative_pivot = false;
     double peak = 0.0;
@@ -116,7 +116,7 @@ TEST_CASE("Newton with arc length passes the limit point of a two-DOF snap-throu
         const NewtonResult r = solve_increment(problem, constraint, settings, solver);
         REQUIRE(r.converged());
         CHECK(r.iterations <= 6);
-        previous = {r.increment, r.load_change, constraint.start_negative_pivots()};
+        previous = r.increment;
         // On the exact path λ = f(v), w = v + λ/k.
         CHECK(problem.lambda_ == Approx(SnapThrough::f(problem.x_[0])).margin(1e-8));
         CHECK(problem.x_[1] == Approx(problem.x_[0] + problem.lambda_ / 10.0).margin(1e-8));

@@ -1,6 +1,5 @@
 #include "analysis/increment_constraints.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -8,34 +7,22 @@ namespace plastica {
 
 namespace {
 constexpr double no_root = std::numeric_limits<double>::quiet_NaN();
-// Below this cosine between the last increment and the tangent's direction, Feng's criterion
-// gives way to the last step's load sense (the tangent turned by more than 60°).
-constexpr double weak_alignment = 0.5;
 }
 
-double DisplacementControl::load_change(int, const Eigen::VectorXd& increment, const Eigen::VectorXd& du_residual,
-                                        const Eigen::VectorXd& du_load, int) {
+double DisplacementControl::load_change(int, const Eigen::VectorXd& increment,
+                                        const Eigen::VectorXd& du_residual, const Eigen::VectorXd& du_load) {
     // Keep the controlled equation's increment at h: its total after this correction.
     const double target = h_ - increment[equation_];
     if (std::abs(du_load[equation_]) < 1e-300) return no_root;
     return (target - du_residual[equation_]) / du_load[equation_];
 }
 
-double ArcLength::load_change(int iteration, const Eigen::VectorXd& increment, const Eigen::VectorXd& du_residual,
-                              const Eigen::VectorXd& du_load, int negative_pivots) {
+double ArcLength::load_change(int iteration, const Eigen::VectorXd& increment,
+                              const Eigen::VectorXd& du_residual, const Eigen::VectorXd& du_load) {
     if (iteration == 0) {
-        start_negative_pivots_ = negative_pivots;
         double sign = h_ >= 0.0 ? 1.0 : -1.0;
-        const Eigen::VectorXd& previous = last_.increment;
-        if (previous.size() == du_load.size() && previous.norm() > 0.0) {
-            const double cosine = previous.dot(du_load) / (previous.norm() * std::max(du_load.norm(), 1e-300));
-            if (std::abs(cosine) >= weak_alignment || last_.negative_pivots < 0 || last_.load_change == 0.0) {
-                sign = cosine >= 0.0 ? 1.0 : -1.0;
-            } else {
-                const bool limit_passed = (negative_pivots - last_.negative_pivots) % 2 != 0;
-                sign = (last_.load_change > 0.0) != limit_passed ? 1.0 : -1.0;
-            }
-        }
+        if (previous_.size() == du_load.size() && previous_.norm() > 0.0)
+            sign = previous_.dot(du_load) >= 0.0 ? 1.0 : -1.0;
         return sign * std::abs(h_) / std::max(du_load.norm(), 1e-300);
     }
     const Eigen::VectorXd base = increment + du_residual;

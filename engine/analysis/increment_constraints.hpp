@@ -10,8 +10,8 @@ namespace plastica {
 class LoadControl final : public IncrementConstraint {
 public:
     explicit LoadControl(double delta_lambda) : h_(delta_lambda) {}
-    double load_change(int iteration, const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                       int) override {
+    double load_change(int iteration, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                       const Eigen::VectorXd&) override {
         return iteration == 0 ? h_ : 0.0;
     }
 
@@ -24,38 +24,24 @@ public:
     // Moves equation `equation` by `delta` (already signed) in the increment.
     DisplacementControl(int equation, double delta) : equation_(equation), h_(delta) {}
     double load_change(int iteration, const Eigen::VectorXd& increment, const Eigen::VectorXd& du_residual,
-                       const Eigen::VectorXd& du_load, int negative_pivots) override;
+                       const Eigen::VectorXd& du_load) override;
 
 private:
     int equation_;
     double h_;
 };
 
-// What the last converged arc-length step leaves for the next one's predictor.
-struct ArcLengthMemory {
-    Eigen::VectorXd increment;  // free DOFs (empty at the start)
-    double load_change = 0.0;
-    int negative_pivots = -1;   // of the tangent the step started from (-1: unknown)
-};
-
 class ArcLength final : public IncrementConstraint {
 public:
-    // The predictor's sign follows the last increment's direction (Feng's criterion), which
-    // passes limit points without pivot tracking. Where the tangent has turned by more than 60°
-    // from that increment (a contact closing, a plastic zone spreading: the arch pressed into its
-    // floor) the dot product no longer tells forward from back, and the load keeps the last
-    // step's sense unless the tangent's inertia changed parity since that step began (a limit
-    // point passed).
-    ArcLength(double length, const ArcLengthMemory& last) : h_(length), last_(last) {}
+    // previous: the last converged increment (empty at the start); its direction chooses the
+    // predictor's sign (Feng's criterion), which passes limit points without pivot tracking.
+    ArcLength(double length, const Eigen::VectorXd& previous) : h_(length), previous_(previous) {}
     double load_change(int iteration, const Eigen::VectorXd& increment, const Eigen::VectorXd& du_residual,
-                       const Eigen::VectorXd& du_load, int negative_pivots) override;
-    // The tangent's negative pivots at this step's start, for the next step's memory.
-    int start_negative_pivots() const { return start_negative_pivots_; }
+                       const Eigen::VectorXd& du_load) override;
 
 private:
     double h_;
-    const ArcLengthMemory& last_;
-    int start_negative_pivots_ = -1;
+    const Eigen::VectorXd& previous_;
 };
 
 } // namespace plastica

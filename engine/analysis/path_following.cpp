@@ -115,9 +115,8 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         break;
     }
     case Scheme::arc_length: {
-        ArcLength c(h, arc_memory_);
+        ArcLength c(h, previous_increment_);
         result = solve_increment(problem, c, settings, solver_, hook, start);
-        if (result.converged()) arc_memory_ = {result.increment, result.load_change, c.start_negative_pivots()};
         break;
     }
     }

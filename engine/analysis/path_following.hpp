@@ -5,7 +5,6 @@
 // Increments adapt to the iteration count; a failed increment is reverted and halved.
 #pragma once
 
-#include "analysis/increment_constraints.hpp"
 #include "analysis/path_extrapolation.hpp"
 #include "analysis/step_result.hpp"
 #include "analysis/structural_system.hpp"
@@ -96,7 +95,6 @@ private:
     Eigen::VectorXd u_;     // full displacement vector
     Eigen::VectorXd ubar_;  // reference prescribed displacements, full
     Eigen::VectorXd previous_increment_; // free DOFs, last converged Δu
-    ArcLengthMemory arc_memory_;         // the last arc-length step, for the next predictor
     double lambda_ = 0.0;
     double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference
     int steps_since_cut_ = 0;  // converged steps at the increment a cut left (fixed increments)

@@ -142,7 +142,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         rhs.col(1) = load;
         const Eigen::MatrixXd both = solver.solve(rhs);
         const Eigen::VectorXd du_r = both.col(0), du_f = both.col(1);
-        const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f, solver.negative_pivots());
+        const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f);
         if (!std::isfinite(dl)) {
             result.failure = NewtonFailure::no_constraint_root;
             return result;

@@ -38,10 +38,9 @@ public:
 class IncrementConstraint {
 public:
     virtual ~IncrementConstraint() = default;
-    // Iteration 0 is the predictor; `increment` is Δx of the step so far; negative_pivots is
-    // the tangent's count of negative eigenvalues.
-    virtual double load_change(int iteration, const Eigen::VectorXd& increment, const Eigen::VectorXd& du_residual,
-                               const Eigen::VectorXd& du_load, int negative_pivots) = 0;
+    // Iteration 0 is the predictor; `increment` is Δx of the step so far.
+    virtual double load_change(int iteration, const Eigen::VectorXd& increment,
+                               const Eigen::VectorXd& du_residual, const Eigen::VectorXd& du_load) = 0;
 };
 
 enum class Acceptance { none, residual, stagnation };
