@@ -79,10 +79,4 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
     return order_inverse_ * x;
 }
 
-Eigen::MatrixXd LinearSolver::solve(const Eigen::MatrixXd& b) const {
-    if (using_lu_) return lu_.solve(b);
-    const Eigen::MatrixXd x = ldlt_.solve(order_ * b);
-    return order_inverse_ * x;
-}
-
 } // namespace plastica

@@ -20,8 +20,6 @@ public:
     // must stay the one of the first call (the assembler keeps it fixed).
     bool factorize(const SparseMatrix& K);
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-    // Several right-hand sides in one pass over the factor (columns of b).
-    Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
     // Pivots below zero_pivot of their own diagonal entry are round-off: neither counted as
     // negative nor trusted (LU takes over).
     static constexpr double zero_pivot = 1e-15;

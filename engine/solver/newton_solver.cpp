@@ -137,11 +137,8 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             return result;
         }
         result.negative_pivots_seen = std::max(result.negative_pivots_seen, solver.negative_pivots());
-        Eigen::MatrixXd rhs(residual.size(), 2);
-        rhs.col(0) = residual;
-        rhs.col(1) = load;
-        const Eigen::MatrixXd both = solver.solve(rhs);
-        const Eigen::VectorXd du_r = both.col(0), du_f = both.col(1);
+        const Eigen::VectorXd du_r = solver.solve(residual);
+        const Eigen::VectorXd du_f = solver.solve(load);
         const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f);
         if (!std::isfinite(dl)) {
             result.failure = NewtonFailure::no_constraint_root;
