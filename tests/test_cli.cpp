@@ -113,7 +113,7 @@ void write_long_run(const fs::path& path) {
     text << in.rdbuf();
     std::string s = text.str();
     s.replace(s.find("increment = 0.5"), 15, "increment = 0.002");
-    s.replace(s.find("max_steps = 400"), 15, "max_steps = 90000");
+    s.replace(s.find("max_steps = 2000"), 16, "max_steps = 90000");
     std::ofstream(path) << s;
 }
 
@@ -162,7 +162,7 @@ TEST_CASE("A bad scene file exits with 2 and names file, line and key, creating 
 
 TEST_CASE("An analysis that stops early exits with 3 and keeps its converged steps", "[cli]") {
     const fs::path dir = scratch("early");
-    const fs::path early = edited_model(dir, "early.toml", "max_steps = 400", "max_steps = 5");
+    const fs::path early = edited_model(dir, "early.toml", "max_steps = 2000", "max_steps = 5");
     const Result r = command("run " + early.string() + " -o " + (dir / "out").string() + " --no-render -q");
     CHECK(r.code == 3);
     CHECK_THAT(r.output, Catch::Contains("step limit reached"));
@@ -384,7 +384,7 @@ TEST_CASE("A curves-only run writes curve.csv and run.json, no series, with the 
     CHECK(read_csv(out / "curve.csv").at(200, "load") == Approx(elastic_ring_load_at_100).epsilon(1e-9));
     // A run that stops early still exits 3, its converged steps kept.
     const fs::path dir = scratch("curves_only_short");
-    const fs::path scene = edited_model(dir, "short.toml", "max_steps = 400", "max_steps = 5");
+    const fs::path scene = edited_model(dir, "short.toml", "max_steps = 2000", "max_steps = 5");
     const Result stopped = command("run " + scene.string() + " -o " + (dir / "out").string() + " --curves-only -q");
     CHECK(stopped.code == 3);
     CHECK(fs::exists(dir / "out" / "curve.csv"));
@@ -474,7 +474,7 @@ TEST_CASE("A sampled sweep draws the distribution of its peak load", "[cli][swee
 TEST_CASE("A series that would fill a disk is refused before the run, with the way out", "[cli]") {
     const fs::path dir = scratch("unbounded");
     // 10 000 000 steps of a fixed tiny increment: about 10 million files.
-    const fs::path scene = edited_model(dir, "tiny.toml", "max_steps = 400", "max_steps = 10000000");
+    const fs::path scene = edited_model(dir, "tiny.toml", "max_steps = 2000", "max_steps = 10000000");
     fs::path tiny = dir / "tinier.toml";
     {
         std::ifstream in(scene);
