@@ -136,4 +136,8 @@ TEST_CASE("Round-off that sets a floor above the tolerance is named as the reaso
     CHECK(r.summary.status == RunStatus::no_convergence);
     CHECK_THAT(r.summary.reason, Catch::Contains("round-off alone leaves"));
     CHECK_THAT(r.summary.reason, !Catch::Contains("limit load"));
+    // A floor relative to the load does not fall with the increment: after three cuts the run
+    // stops (it used to cut twenty times, to the smallest increment, for the same message).
+    CHECK_THAT(r.summary.reason, Catch::Contains("no smaller increment can help"));
+    CHECK(r.summary.cut_steps == 4);
 }

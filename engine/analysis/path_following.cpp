@@ -15,6 +15,9 @@
 namespace plastica {
 
 namespace {
+// A failed step whose round-off floor is this many times the residual tolerance stops the run
+// at once.
+constexpr double hopeless_floor = 1e3;
 // How far into its yielding range (in |M|/M_p) one adaptive increment may carry a hinge section.
 constexpr double max_yield_advance = 0.1;
 
@@ -229,6 +232,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
+    int failures_in_step = 0; // attempts of the coming step that failed
     summary.status = RunStatus::step_limit;
     summary.reason = "step limit reached";
     while (step_ < a.max_steps) {
@@ -263,7 +267,16 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         if (outcome.rule == Acceptance::residual) ++summary.accepted_by_residual;
         if (outcome.rule == Acceptance::stagnation) ++summary.accepted_by_stagnation;
         if (!outcome.converged()) {
-            const bool giving_up = std::abs(0.5 * step_h) < h_min;
+            // The failed state's round-off floor. It is relative to the load and set by the
+            // total displacements, so a smaller increment leaves it where it is: far above the
+            // tolerance after three cuts in a row, cutting on could only spend time (a 100 000-
+            // element cantilever cut its first step twenty times for 16 s before saying so). A
+            // single failure says little: its last iterate may be far off, and so its floor.
+            ++failures_in_step;
+            const RoundOffFloor floor_at_failure =
+                outcome.failure != NewtonFailure::non_finite ? round_off_floor() : RoundOffFloor{};
+            const bool hopeless = failures_in_step > 3 && floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
+            const bool giving_up = std::abs(0.5 * step_h) < h_min || hopeless;
             // Under load control, the tangent where the failed increment ended tells whether
             // the structure has passed its limit (a plastic mechanism or buckling); it is read
             // only when the run stops here.
@@ -277,9 +290,6 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
                                       " negative pivot(s)";
                 beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit();
             }
-            // The failed state's round-off floor, read only when the run stops here.
-            const RoundOffFloor floor_at_failure =
-                giving_up && outcome.failure != NewtonFailure::non_finite ? round_off_floor() : RoundOffFloor{};
             u_ = u_saved;
             lambda_ = lambda_saved;
             system_.revert();
@@ -299,8 +309,10 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
                 why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
             } else {
                 why << "no convergence in step " << step_ + 1 << " at load factor " << lambda_ << " ("
-                    << to_string(outcome.failure) << " with the increment cut to " << std::abs(h)
-                    << "; the residual ended at " << outcome.residual << " of the load, residual_tolerance "
+                    << to_string(outcome.failure);
+                if (hopeless) why << ", no smaller increment can help";
+                else why << " with the increment cut to " << std::abs(h);
+                why << "; the residual ended at " << outcome.residual << " of the load, residual_tolerance "
                     << a.residual_tolerance << ")";
                 if (floor_at_failure.total >= 0.1 * a.residual_tolerance) {
                     why << ": round-off alone leaves about " << floor_at_failure.total
@@ -330,6 +342,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             continue;
         }
         system_.commit();
+        failures_in_step = 0;
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
         arc_length_ += previous_increment_.norm();

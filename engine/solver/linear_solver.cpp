@@ -1,6 +1,7 @@
 #include "solver/linear_solver.hpp"
 
 #include <Eigen/OrderingMethods>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -12,16 +13,31 @@ void LinearSolver::analyse(const SparseMatrix& K) {
     Eigen::AMDOrdering<int> amd;
     amd(K.selfadjointView<Eigen::Lower>(), order_inverse_);
     order_ = order_inverse_.inverse();
-    // Permute a copy of K whose values are their own indices: the result tells each value of
-    // the permuted triangle where it comes from (a symmetric permutation only moves values).
-    SparseMatrix indices = K;
-    for (Eigen::Index k = 0; k < indices.nonZeros(); ++k) indices.valuePtr()[k] = static_cast<double>(k);
-    permuted_.resize(K.rows(), K.cols());
-    permuted_.selfadjointView<Eigen::Upper>() = indices.selfadjointView<Eigen::Lower>().twistedBy(order_);
-    permuted_.makeCompressed();
-    source_.resize(static_cast<std::size_t>(permuted_.nonZeros()));
-    for (Eigen::Index k = 0; k < permuted_.nonZeros(); ++k)
-        source_[static_cast<std::size_t>(k)] = static_cast<int>(permuted_.valuePtr()[k]);
+    // The upper triangle of order_·K·order_ᵀ: entry (i, j) of K's lower triangle moves to
+    // (min, max) of its new positions. Its pattern, and for each of its values the index of
+    // the value of K it comes from, are laid out as Eigen's symmetric permutation lays them
+    // (columns counted, then filled in K's order), without the copy of K that the permutation
+    // would need to carry the indices (a sixth of the peak memory of a large model).
+    const int n = static_cast<int>(K.rows());
+    const int* position = order_.indices().data();
+    std::vector<int> next(static_cast<std::size_t>(n) + 1, 0);
+    for (int col = 0; col < K.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+            if (it.row() >= col) ++next[static_cast<std::size_t>(std::max(position[it.row()], position[col])) + 1];
+    for (int j = 0; j < n; ++j) next[static_cast<std::size_t>(j) + 1] += next[static_cast<std::size_t>(j)];
+    permuted_.resize(n, n);
+    permuted_.resizeNonZeros(next[static_cast<std::size_t>(n)]);
+    std::copy(next.begin(), next.end(), permuted_.outerIndexPtr());
+    source_.resize(static_cast<std::size_t>(next[static_cast<std::size_t>(n)]));
+    for (int col = 0; col < K.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
+            if (it.row() < col) continue;
+            const int a = position[it.row()], b = position[col];
+            const int at = next[static_cast<std::size_t>(std::max(a, b))]++;
+            permuted_.innerIndexPtr()[at] = std::min(a, b);
+            permuted_.valuePtr()[at] = 0.0;
+            source_[static_cast<std::size_t>(at)] = static_cast<int>(&it.value() - K.valuePtr());
+        }
     // Where each permuted equation's diagonal entry sits among K's values (−1: none).
     diagonal_slot_.assign(static_cast<std::size_t>(K.rows()), -1);
     for (int col = 0; col < K.outerSize(); ++col)
