@@ -146,7 +146,7 @@ int run_command(const Args& args) {
     Progress progress("solving", 20);
     const AnalysisSpec& a = model.analysis;
     auto track = [&](const StepResult& r) {
-        report.last = r;
+        report.last = final_state(model, r);
         if (r.load > report.peak_load) {
             report.peak_load = r.load;
             report.peak_load_displacement = r.control_displacement;

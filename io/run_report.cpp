@@ -24,6 +24,19 @@ Json header(const Model& model, const std::string& scene_file) {
 
 } // namespace
 
+FinalState final_state(const Model& model, const StepResult& step) {
+    FinalState f;
+    f.load_factor = step.load_factor;
+    f.load = step.load;
+    f.control_displacement = step.control_displacement;
+    f.contact_count = step.contact_count;
+    f.hinge_count = step.hinge_count;
+    for (const ElementResult& e : step.elements)
+        for (const HingeReport& h : e.hinge) f.section_failures += h.section_failures;
+    if (!model.supports.empty() && !step.reaction.empty()) f.reactions = support_reactions(model, step);
+    return f;
+}
+
 std::string to_json(const RunReport& r) {
     Json j = header(*r.model, r.scene_file);
     if (!r.overrides.empty()) {
@@ -43,20 +56,17 @@ std::string to_json(const RunReport& r) {
     // Section solves (SCM) that did not converge: the end kept its previous stiffness for that
     // step. Counted over the run, so a user sees it rather than a silent plastic hinge.
     if (r.model->has_plasticity(Plasticity::hinges)) {
-        int section_failures = 0;
-        for (const ElementResult& e : r.last.elements)
-            for (const HingeReport& h : e.hinge) section_failures += h.section_failures;
-        j["section_solve_failures"] = section_failures;
+        j["section_solve_failures"] = r.last.section_failures;
     }
     j["final"] = {{"load_factor", r.last.load_factor}, {"load", r.last.load},
                   {"control_displacement", r.last.control_displacement},
                   {"contact_count", r.last.contact_count}, {"hinge_count", r.last.hinge_count}};
     // The supports' reactions at the last step: the force each exerts on the structure, along
     // the DOFs it fixes.
-    if (!r.model->supports.empty() && !r.last.reaction.empty()) {
+    if (!r.last.reactions.empty()) {
         const char* const names[dofs_per_node] = {"fx", "fy", "mz"};
         Json reactions = Json::array();
-        for (const SupportReaction& s : support_reactions(*r.model, r.last)) {
+        for (const SupportReaction& s : r.last.reactions) {
             const Node& n = r.model->nodes[s.node];
             Json one = {{"support", s.support + 1}, {"at", {n.x, n.y}}};
             for (int d = 0; d < dofs_per_node; ++d)

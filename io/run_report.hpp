@@ -2,6 +2,7 @@
 #pragma once
 
 #include "analysis/step_result.hpp"
+#include "analysis/support_reactions.hpp"
 #include "model/model.hpp"
 
 #include <string>
@@ -10,13 +11,27 @@
 
 namespace plastica {
 
+// What run.json says of the last converged step: kept instead of the step itself, whose
+// element results were copied at every step and held through the analysis (a tenth of the
+// peak memory of a large model).
+struct FinalState {
+    double load_factor = 0.0;
+    double load = 0.0;
+    double control_displacement = 0.0;
+    int contact_count = 0;
+    int hinge_count = 0;
+    int section_failures = 0;                 // summed over the hinges
+    std::vector<SupportReaction> reactions;   // empty when the step carries none
+};
+FinalState final_state(const Model& model, const StepResult& step);
+
 struct RunReport {
     std::string scene_file;
     std::vector<std::pair<std::string, std::string>> overrides; // --set KEY=VALUE, in order
     const Model* model = nullptr;
     RunSummary summary;
     std::vector<std::pair<std::string, double>> stage_seconds;
-    StepResult last;        // last converged step
+    FinalState last;        // of the last converged step
     double peak_load = 0.0; // largest reported load
     double peak_load_displacement = 0.0;
 };
