@@ -31,6 +31,19 @@ namespace {
 std::atomic<bool> stop_requested{false};
 extern "C" void request_stop(int) { stop_requested = true; }
 
+// Adds the seconds of its scope to a total, also when the scope is left by an exception.
+class AddsElapsed {
+public:
+    explicit AddsElapsed(double& total) : total_(total) {}
+    ~AddsElapsed() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(); }
+    AddsElapsed(const AddsElapsed&) = delete;
+    AddsElapsed& operator=(const AddsElapsed&) = delete;
+
+private:
+    double& total_;
+    std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+};
+
 double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -168,7 +181,9 @@ int run_command(const Args& args) {
     const auto t1 = std::chrono::steady_clock::now();
     // A step is written everywhere or nowhere: when the series cannot take it (a full disk),
     // its curve row is taken back, and the run stops with every output at the step before.
+    double output_seconds = 0.0; // inside the writers, for run.json's split of the time
     auto write_step = [&](const StepResult& r) {
+        const AddsElapsed timing(output_seconds);
         curve(r);
         if (series) try {
                 (*series)(r);
@@ -187,7 +202,8 @@ int run_command(const Args& args) {
             report.summary.status = RunStatus::output_failed;
             report.summary.reason = std::string("the last step could not be added to the series: ") + e.what();
         }
-    report.stage_seconds = {{"read", read_seconds}, {"analysis_and_output", seconds_since(t1)}};
+    const double analysis_and_output = seconds_since(t1);
+    report.stage_seconds = {{"read", read_seconds}, {"analysis", analysis_and_output - output_seconds}, {"output", output_seconds}};
     try {
         write_run_report((fs::path(folder) / "run.json").string(), report);
     } catch (const std::exception& e) {
@@ -209,7 +225,14 @@ int run_command(const Args& args) {
 #ifdef PLASTICA_DRAWING
     if (draws && report.summary.steps > 0) {
         render_options.quiet = quiet;
+        const auto t2 = std::chrono::steady_clock::now();
         if (const int code = render_and_report(folder, render_options); code != ok) return code;
+        report.stage_seconds.emplace_back("drawing", seconds_since(t2));
+        try {
+            write_run_report((fs::path(folder) / "run.json").string(), report);
+        } catch (const std::exception& e) {
+            std::cerr << "plastica: " << e.what() << " (run.json lacks the drawing time)\n";
+        }
     }
 #endif
     if (report.summary.status != RunStatus::completed) {

@@ -140,6 +140,13 @@ TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json a
     CHECK(run["status"] == "completed");
     CHECK(run["steps"] == 200);
     CHECK(run["final"]["load"].get<double>() == Approx(elastic_ring_load_at_100).epsilon(1e-9));
+    // Where the time went: reading, the analysis, the writers; nothing was drawn.
+    for (const char* stage : {"read", "analysis", "output"}) {
+        CAPTURE(stage);
+        REQUIRE(run["seconds"].contains(stage));
+        CHECK(run["seconds"][stage].get<double>() > 0.0);
+    }
+    CHECK_FALSE(run["seconds"].contains("drawing"));
     // The series: one VTU per step, each listed once in the PVD.
     std::ifstream pvd(out / "ring_elastic.pvd");
     std::stringstream text;
@@ -678,6 +685,7 @@ std::string browser_dom(const fs::path& page) {
 TEST_CASE("plastica report writes one page a browser shows whole, and compare --report shows each failing picture", "[cli][report]") {
     const fs::path out = scratch("report");
     REQUIRE(command("run " + model("ring_elastic.toml") + " -o " + out.string() + " --steps 0,100,200 -q").code == 0);
+    CHECK(read_json(out / "run.json")["seconds"]["drawing"].get<double>() > 0.0);
     const Result r = command("report " + out.string());
     REQUIRE(r.code == 0);
     const fs::path page = out / "report.html";
