@@ -15,8 +15,8 @@
 namespace plastica {
 
 namespace {
-// A failed step whose round-off floor is this many times the residual tolerance stops the run
-// at once.
+// A step that failed after three cuts with a round-off floor this many times the residual
+// tolerance stops the run: no smaller increment lowers that floor.
 constexpr double hopeless_floor = 1e3;
 // How far into its yielding range (in |M|/M_p) one adaptive increment may carry a hinge section.
 constexpr double max_yield_advance = 0.1;
