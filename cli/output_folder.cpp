@@ -15,7 +15,7 @@ std::string default_output_folder(const std::string& scene_name) {
 }
 
 
-void prepare_output_folder(const std::string& folder, const std::string& scene_name, bool force) {
+void prepare_output_folder(const std::string& folder, const std::string& scene_name, bool force, bool keep_step_files) {
     const fs::path dir(folder);
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw std::runtime_error("output path " + folder + " exists and is not a folder");
@@ -28,7 +28,8 @@ void prepare_output_folder(const std::string& folder, const std::string& scene_n
                                      (foreign ? "results of scene '" + other + "'" : "files of another program") +
                                      "; choose another folder with -o or pass --force to replace them");
         // Results of an earlier run: remove them so no stale step joins the new series.
-        for (const char* sub : {"vtu", "frames"}) fs::remove_all(dir / sub);
+        fs::remove_all(dir / "frames");
+        if (!keep_step_files) fs::remove_all(dir / "vtu");
         for (const auto& entry : fs::directory_iterator(dir)) {
             const std::string ext = entry.path().extension().string();
             if (ext == ".pvd" || ext == ".vtp" || ext == ".csv" || ext == ".json" || ext == ".png" || ext == ".gif")

@@ -1,5 +1,6 @@
 // plastica run: read a scene, solve it, write curve.csv, run.json and the VTU/PVD series,
 // then render the series unless --no-render (--curves-only: curve.csv and run.json alone).
+#include "background_output.hpp"
 #include "commands.hpp"
 #include "drawing_program.hpp"
 #include "options.hpp"
@@ -134,7 +135,7 @@ int run_command(const Args& args) {
     }
     const std::string folder = vm.count("output") ? vm["output"].as<std::string>() : default_output_folder(model.name);
     try {
-        prepare_output_folder(folder, model.name, vm.count("force") > 0);
+        prepare_output_folder(folder, model.name, vm.count("force") > 0, !vm.count("curves-only"));
     } catch (const std::exception& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;
@@ -193,7 +194,18 @@ int run_command(const Args& args) {
             }
         track(r);
     };
-    report.summary = analysis->run({write_step}, control);
+    // A curve row costs less than handing the step to another thread: only a series is
+    // written beside the analysis (background_output.hpp).
+    std::optional<BackgroundOutput> output;
+    if (series) output.emplace(write_step);
+    report.summary = analysis->run({[&](const StepResult& r) { output ? output->push(r) : write_step(r); }}, control);
+    const double analysis_seconds = seconds_since(t1); // waits on a full queue included
+    if (output) output->finish();
+    if (const std::optional<OutputFailure> failed = output ? output->failure() : std::nullopt) {
+        report.summary.status = RunStatus::output_failed;
+        report.summary.reason = "the results of step " + std::to_string(failed->step) + " could not be written: " + failed->message;
+        report.summary.steps = std::max(failed->step - 1, 0);
+    }
     progress.finish();
     if (series) try {
             series->finish();
@@ -202,8 +214,8 @@ int run_command(const Args& args) {
             report.summary.status = RunStatus::output_failed;
             report.summary.reason = std::string("the last step could not be added to the series: ") + e.what();
         }
-    const double analysis_and_output = seconds_since(t1);
-    report.stage_seconds = {{"read", read_seconds}, {"analysis", analysis_and_output - output_seconds}, {"output", output_seconds}};
+    // The output's seconds are the writers' own, spent beside the analysis.
+    report.stage_seconds = {{"read", read_seconds}, {"analysis", analysis_seconds}, {"output", output_seconds}};
     try {
         write_run_report((fs::path(folder) / "run.json").string(), report);
     } catch (const std::exception& e) {

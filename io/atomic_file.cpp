@@ -30,23 +30,58 @@ void write_all(int fd, const char* data, std::size_t size, const std::string& pa
     }
 }
 
+namespace {
+
+// An open file descriptor, closed once (another thread may reuse its number after that).
+class Descriptor {
+public:
+    Descriptor(const std::string& path, int flags) : path_(path), fd_(::open(path.c_str(), flags | O_WRONLY | O_CLOEXEC, 0644)) {
+        if (fd_ < 0) fail();
+    }
+    ~Descriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    int get() const { return fd_; }
+    void close() {
+        const int fd = fd_;
+        fd_ = -1;
+        if (::close(fd) != 0) fail();
+    }
+    [[noreturn]] void fail() const { throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno)); }
+
+private:
+    std::string path_;
+    int fd_;
+};
+
+} // namespace
+
 void write_file_atomically(const std::string& path, const std::string& contents) {
     const std::string tmp = temporary_name(path);
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
     try {
-        write_all(fd, contents.data(), contents.size(), path);
-        if (::close(fd) != 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+        Descriptor file(tmp, O_CREAT | O_TRUNC);
+        write_all(file.get(), contents.data(), contents.size(), path);
+        file.close();
+        rename_into_place(tmp, path);
     } catch (...) {
         // A full disk leaves no half-written file behind, under either name.
-        ::close(fd);
         ::unlink(tmp.c_str());
         throw;
     }
+}
+
+void write_file_in_place(const std::string& path, const std::string& contents) {
     try {
-        rename_into_place(tmp, path);
+        // Not truncated on opening: the new contents go over the old blocks, and only a tail
+        // the new file no longer needs is cut off (freeing blocks can mean a synchronous discard).
+        Descriptor file(path, O_CREAT);
+        write_all(file.get(), contents.data(), contents.size(), path);
+        if (::ftruncate(file.get(), static_cast<off_t>(contents.size())) != 0) file.fail();
+        file.close();
     } catch (...) {
-        ::unlink(tmp.c_str());
+        ::unlink(path.c_str());
         throw;
     }
 }

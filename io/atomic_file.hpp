@@ -9,6 +9,11 @@ namespace plastica {
 // Throws std::runtime_error naming the path and the reason (a full disk: "No space left on
 // device") and leaves neither the temporary nor a partial file.
 void write_file_atomically(const std::string& path, const std::string& contents);
+// Writes the file under its final name, over an existing one in place (the file keeps its
+// inode: creating one costs a file system like ext4 far more than filling it). For files that
+// readers find only through a list written after them (a series' steps). On failure it
+// throws as above and removes the partial file.
+void write_file_in_place(const std::string& path, const std::string& contents);
 // Writes all of it to an open descriptor, or throws naming the path and the reason.
 void write_all(int fd, const char* data, std::size_t size, const std::string& path);
 std::string temporary_name(const std::string& path);

@@ -56,6 +56,10 @@ VtuSeriesWriter::VtuSeriesWriter(const Model& model, const std::string& director
       options_(options) {
     if (options_.every < 1) options_.every = 1;
     fs::create_directories(fs::path(directory) / "vtu");
+    // An earlier run's step files: rewritten in place where this run has the same steps, the
+    // others removed at the end (finish).
+    for (const auto& entry : fs::directory_iterator(fs::path(directory) / "vtu"))
+        if (entry.path().extension() == ".vtu") earlier_steps_.insert(entry.path().filename().string());
     const auto [load_unit, displacement_unit] = reported_units(model);
     units_ = {load_unit, displacement_unit};
     for (const result::Array& a : result::arrays())
@@ -63,7 +67,7 @@ VtuSeriesWriter::VtuSeriesWriter(const Model& model, const std::string& director
     write_base();
 }
 
-VtuSeriesWriter::~VtuSeriesWriter() = default;
+VtuSeriesWriter::~VtuSeriesWriter() { remove_earlier_steps(); }
 VtuSeriesWriter::VtuSeriesWriter(VtuSeriesWriter&&) noexcept = default;
 
 void VtuSeriesWriter::operator()(const StepResult& r) {
@@ -76,8 +80,20 @@ void VtuSeriesWriter::operator()(const StepResult& r) {
 }
 
 void VtuSeriesWriter::finish() {
-    if (pending_) write_step(*pending_);
+    try {
+        if (pending_) write_step(*pending_);
+    } catch (...) {
+        remove_earlier_steps();
+        throw;
+    }
     pending_.reset();
+    remove_earlier_steps();
+}
+
+void VtuSeriesWriter::remove_earlier_steps() noexcept {
+    std::error_code ec;
+    for (const std::string& name : earlier_steps_) fs::remove(fs::path(directory_) / "vtu" / name, ec);
+    earlier_steps_.clear();
 }
 
 namespace {
@@ -287,7 +303,9 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
 
     const std::string file = "vtu/" + step_file_name(r.step);
     const std::string path = (fs::path(directory_) / file).string();
-    write_file_atomically(path, unstructured_grid_xml(grid, options_.compression));
+    // Listed in the PVD only once complete, so no reader of the series sees it half-written.
+    write_file_in_place(path, unstructured_grid_xml(grid, options_.compression));
+    earlier_steps_.erase(step_file_name(r.step));
     try {
         append_to_pvd(time, file);
     } catch (...) {

@@ -46,6 +46,7 @@ private:
     void write_step(const StepResult& r);
     void write_base();
     void append_to_pvd(double time, const std::string& file);
+    void remove_earlier_steps() noexcept;
 
     const Model* model_;
     std::string directory_;
@@ -56,6 +57,7 @@ private:
         std::string load, displacement; // of the reported load and control displacement
     } units_;
     std::set<std::string> arrays_; // the schema's arrays this scene writes, decided once
+    std::set<std::string> earlier_steps_; // step files of an earlier run not yet rewritten
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> pvd_{nullptr, &std::fclose};
     long pvd_tail_ = 0; // where the closing tags start
     bool has_base_file_ = false;

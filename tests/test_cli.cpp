@@ -11,6 +11,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -156,6 +157,41 @@ TEST_CASE("plastica run solves the elastic ring and writes curve.csv, run.json a
     CHECK(listed == 201u);
     CHECK(fs::exists(out / "vtu" / "step_000200.vtu"));
     CHECK_FALSE(fs::exists(out / "vtu" / "step_000201.vtu"));
+}
+
+TEST_CASE("A run again into its folder rewrites the step files in place and removes the steps it no longer has", "[cli][output]") {
+    const fs::path out = scratch("rerun");
+    auto inode = [](const fs::path& file) {
+        struct stat st {};
+        REQUIRE(::stat(file.c_str(), &st) == 0);
+        return st.st_ino;
+    };
+    auto vtu_files = [&out] {
+        std::size_t n = 0;
+        for (const auto& f : fs::directory_iterator(out / "vtu")) n += f.path().extension() == ".vtu";
+        return n;
+    };
+    REQUIRE(command("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render -q").code == 0);
+    REQUIRE(vtu_files() == 201u);
+    const auto first = inode(out / "vtu" / "step_000005.vtu");
+    // Half the push, compressed (shorter files): steps 0–100 again, 101–200 gone.
+    const std::string half = " --set analysis.target_displacement=50 --compression lz4 --no-render -q";
+    REQUIRE(command("run " + model("ring_elastic.toml") + " -o " + out.string() + half).code == 0);
+    CHECK(vtu_files() == 101u);
+    CHECK(fs::exists(out / "vtu" / "step_000100.vtu"));
+    CHECK_FALSE(fs::exists(out / "vtu" / "step_000101.vtu"));
+    CHECK(inode(out / "vtu" / "step_000005.vtu") == first);
+    // Each rewritten file is, byte for byte, the one a fresh run writes (no tail of the old one).
+    const fs::path fresh = scratch("rerun_fresh");
+    REQUIRE(command("run " + model("ring_elastic.toml") + " -o " + fresh.string() + half).code == 0);
+    auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    for (const char* step : {"step_000000.vtu", "step_000005.vtu", "step_000100.vtu"}) {
+        CAPTURE(step);
+        CHECK(bytes(out / "vtu" / step) == bytes(fresh / "vtu" / step));
+    }
 }
 
 TEST_CASE("A bad scene file exits with 2 and names file, line and key, creating no output", "[cli]") {

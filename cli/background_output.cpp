@@ -1,0 +1,62 @@
+#include "background_output.hpp"
+
+#include <exception>
+#include <stdexcept>
+#include <utility>
+
+namespace plastica::cli {
+
+BackgroundOutput::BackgroundOutput(Sink sink, std::size_t capacity)
+    : sink_(std::move(sink)), capacity_(capacity), worker_([this] { work(); }) {}
+
+BackgroundOutput::~BackgroundOutput() { finish(); }
+
+void BackgroundOutput::push(const StepResult& step) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [this] { return queue_.size() < capacity_ || failure_; });
+    if (failure_) throw std::runtime_error(failure_->message);
+    queue_.push_back(step);
+    changed_.notify_all();
+}
+
+void BackgroundOutput::finish() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        closing_ = true;
+    }
+    changed_.notify_all();
+    if (worker_.joinable()) worker_.join();
+}
+
+std::optional<OutputFailure> BackgroundOutput::failure() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return failure_;
+}
+
+void BackgroundOutput::work() {
+    for (;;) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
+        if (queue_.empty()) return; // closing, and everything written
+        // The step stays queued while it is written: the queue's length bounds the steps
+        // held in memory, the one being written included.
+        const StepResult& step = queue_.front();
+        lock.unlock();
+        std::optional<OutputFailure> failed;
+        try {
+            sink_(step);
+        } catch (const std::exception& e) {
+            failed = OutputFailure{step.step, e.what()};
+        }
+        lock.lock();
+        queue_.pop_front();
+        if (failed) {
+            failure_ = std::move(failed);
+            queue_.clear(); // steps after a failed one are not written
+        }
+        changed_.notify_all();
+        if (failure_) return;
+    }
+}
+
+} // namespace plastica::cli

@@ -1,0 +1,55 @@
+// Writes converged steps on a thread of its own, so that creating and filling the files of
+// one step overlaps solving the next ones (the second core of a workstation is otherwise idle
+// while the analysis waits on the file system). The analysis hands over a copy of each step;
+// a bounded queue holds those not yet written, so a slow disk holds the analysis back instead
+// of filling memory. The first step the sink cannot take (a full disk) ends the writing: later
+// steps are dropped, and the analysis hears of the failure at its next step.
+#pragma once
+
+#include "analysis/step_result.hpp"
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace plastica::cli {
+
+struct OutputFailure {
+    int step = 0;        // the step that could not be written
+    std::string message; // what the sink threw
+};
+
+class BackgroundOutput {
+public:
+    using Sink = std::function<void(const StepResult&)>;
+    explicit BackgroundOutput(Sink sink, std::size_t capacity = 64);
+    ~BackgroundOutput();
+    BackgroundOutput(const BackgroundOutput&) = delete;
+    BackgroundOutput& operator=(const BackgroundOutput&) = delete;
+
+    // Queues a copy of the step (waits while the queue is full). Throws std::runtime_error
+    // with the sink's message once a step could not be written.
+    void push(const StepResult& step);
+    // Waits until every queued step is written, or the sink failed, and ends the thread.
+    void finish();
+    std::optional<OutputFailure> failure() const;
+
+private:
+    void work();
+
+    Sink sink_;
+    std::size_t capacity_;
+    mutable std::mutex mutex_;
+    std::condition_variable changed_;
+    std::deque<StepResult> queue_;
+    bool closing_ = false;
+    std::optional<OutputFailure> failure_;
+    std::thread worker_;
+};
+
+} // namespace plastica::cli
