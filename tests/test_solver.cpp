@@ -2,7 +2,11 @@
 // stops with the last converged state kept.
 #include "analysis_helpers.hpp"
 
+#include "solver/sparse_ldlt.hpp"
+
+#include <Eigen/SparseCholesky>
 #include <catch2/catch.hpp>
+#include <random>
 
 using namespace plastica;
 using namespace plastica::testing;
@@ -140,4 +144,56 @@ TEST_CASE("Round-off that sets a floor above the tolerance is named as the reaso
     // stops (it used to cut twenty times, to the smallest increment, for the same message).
     CHECK_THAT(r.summary.reason, Catch::Contains("no smaller increment can help"));
     CHECK(r.summary.cut_steps == 4);
+}
+
+TEST_CASE("The replayed sparse LDLᵀ gives Eigen's SimplicialLDLT to the last bit, and stops at a zero pivot", "[solver][ldlt]") {
+    // Random symmetric patterns (a band with scattered couplings, as frames give), definite
+    // and indefinite: the pivots and solutions must be bit for bit Eigen's, since the engine's
+    // curves are kept equal across this change of solver.
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    for (int trial = 0; trial < 20; ++trial) {
+        const int n = 20 + 7 * trial;
+        std::vector<Eigen::Triplet<double>> entries;
+        for (int i = 0; i < n; ++i) {
+            // Definite for even trials (dominant diagonal), indefinite for odd ones.
+            entries.emplace_back(i, i, trial % 2 == 0 ? 10.0 + value(random) : 3.0 * value(random));
+            for (int j : {i + 1, i + 2, i + 5, static_cast<int>(random() % static_cast<unsigned>(n))})
+                if (j > i && j < n) {
+                    const double v = value(random);
+                    entries.emplace_back(j, i, v);
+                    entries.emplace_back(i, j, v);
+                }
+        }
+        SparseMatrix full(n, n);
+        full.setFromTriplets(entries.begin(), entries.end());
+        const SparseMatrix upper = full.triangularView<Eigen::Upper>();
+        Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> eigen;
+        eigen.compute(upper);
+        REQUIRE(eigen.info() == Eigen::Success);
+        SparseLdlt replay;
+        replay.analyse(upper);
+        // Twice: the second factorisation reuses the first one's storage.
+        REQUIRE(replay.factorize(upper));
+        REQUIRE(replay.factorize(upper));
+        CAPTURE(trial, n);
+        CHECK((replay.pivots().array() == eigen.vectorD().array()).all());
+        Eigen::VectorXd b(n);
+        for (int i = 0; i < n; ++i) b[i] = i % 3 == 0 ? 0.0 : value(random); // zeros: Eigen skips them
+        Eigen::VectorXd x = b;
+        replay.solve_in_place(x);
+        const Eigen::VectorXd expected = eigen.solve(b);
+        CHECK((x.array() == expected.array()).all());
+        CHECK((full * x - b).norm() <= 1e-8 * b.norm() * (1.0 + full.norm()));
+    }
+    // [[1, 1], [1, 1]]: the second pivot is exactly zero.
+    SparseMatrix singular(2, 2);
+    singular.insert(0, 0) = 1.0;
+    singular.insert(0, 1) = 1.0;
+    singular.insert(1, 1) = 1.0;
+    singular.makeCompressed();
+    SparseLdlt replay;
+    replay.analyse(singular);
+    CHECK_FALSE(replay.factorize(singular));
+    CHECK(replay.pivots()[1] == 0.0);
 }

@@ -73,6 +73,10 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
         const Node& b = model.nodes[e.node_j];
         distributed_.push_back(model.sections[e.section].plasticity == Plasticity::distributed);
         elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
+        std::vector<int> held;
+        for (int local = 0; local < 6; ++local)
+            if (equation_[dofs_per_node * (local < 3 ? e.node_i : e.node_j) + local % 3] < 0) held.push_back(local);
+        held_dofs_.push_back(std::move(held));
     }
     internal_ = Eigen::VectorXd::Zero(dof_count());
     coupling_ = Eigen::VectorXd::Zero(free_count_);
@@ -102,13 +106,13 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
                                 std::to_string(spec.node_j + 1) + ")";
             return false;
         }
-        for (int a = 0; a < 6; ++a) {
-            internal_[dofs[a]] += f[a];
+        for (int a = 0; a < 6; ++a) internal_[dofs[a]] += f[a];
+        const std::vector<int>& held = held_dofs_[e];
+        for (int a = 0; a < 6 && !held.empty(); ++a) {
             const int row = equation_[dofs[a]];
             if (row < 0) continue;
-            for (int b = 0; b < 6; ++b)
-                if (equation_[dofs[b]] < 0 && ubar[dofs[b]] != 0.0)
-                    coupling_[row] += k(a, b) * ubar[dofs[b]];
+            for (int b : held)
+                if (ubar[dofs[b]] != 0.0) coupling_[row] += k(a, b) * ubar[dofs[b]];
         }
         assembler_.add(e, k);
     }

@@ -69,6 +69,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<CorotationalBeam> elements_;
     std::vector<bool> distributed_; // per element: fibre sections along it (else hinges or elastic)
+    std::vector<std::vector<int>> held_dofs_; // per element: its local DOFs that are supported or prescribed
     Foundation foundation_;
     FollowerPressure pressure_;
     Eigen::VectorXd fixed_load_;

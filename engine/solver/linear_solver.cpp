@@ -25,17 +25,17 @@ void LinearSolver::analyse(const SparseMatrix& K) {
         for (SparseMatrix::InnerIterator it(K, col); it; ++it)
             if (it.row() >= col) ++next[static_cast<std::size_t>(std::max(position[it.row()], position[col])) + 1];
     for (int j = 0; j < n; ++j) next[static_cast<std::size_t>(j) + 1] += next[static_cast<std::size_t>(j)];
-    permuted_.resize(n, n);
-    permuted_.resizeNonZeros(next[static_cast<std::size_t>(n)]);
-    std::copy(next.begin(), next.end(), permuted_.outerIndexPtr());
+    permuted_k_.resize(n, n);
+    permuted_k_.resizeNonZeros(next[static_cast<std::size_t>(n)]);
+    std::copy(next.begin(), next.end(), permuted_k_.outerIndexPtr());
     source_.resize(static_cast<std::size_t>(next[static_cast<std::size_t>(n)]));
     for (int col = 0; col < K.outerSize(); ++col)
         for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
             if (it.row() < col) continue;
             const int a = position[it.row()], b = position[col];
             const int at = next[static_cast<std::size_t>(std::max(a, b))]++;
-            permuted_.innerIndexPtr()[at] = std::min(a, b);
-            permuted_.valuePtr()[at] = 0.0;
+            permuted_k_.innerIndexPtr()[at] = std::min(a, b);
+            permuted_k_.valuePtr()[at] = 0.0;
             source_[static_cast<std::size_t>(at)] = static_cast<int>(&it.value() - K.valuePtr());
         }
     // Where each permuted equation's diagonal entry sits among K's values (−1: none).
@@ -43,24 +43,24 @@ void LinearSolver::analyse(const SparseMatrix& K) {
     for (int col = 0; col < K.outerSize(); ++col)
         for (SparseMatrix::InnerIterator it(K, col); it; ++it)
             if (it.row() == col) diagonal_slot_[static_cast<std::size_t>(order_.indices()[col])] = static_cast<int>(&it.value() - K.valuePtr());
-    ldlt_.analyzePattern(permuted_);
+    ldlt_.analyse(permuted_k_);
     analysed_ = true;
 }
 
 bool LinearSolver::factorize(const SparseMatrix& K) {
     if (!analysed_) analyse(K);
     const double* values = K.valuePtr();
-    double* target = permuted_.valuePtr();
+    double* target = permuted_k_.valuePtr();
     for (std::size_t k = 0; k < source_.size(); ++k) target[k] = values[source_[k]];
-    ldlt_.factorize(permuted_);
+    const bool nonzero_pivots = ldlt_.factorize(permuted_k_);
     using_lu_ = false;
     // Inertia and the weakest pivot, also when a zero pivot stopped the factorisation (its D
     // holds that zero): it names the DOF of a mechanism.
-    if (ldlt_.vectorD().size() == K.rows()) {
+    {
         // Each pivot against its own diagonal entry: what elimination left of that equation's
         // stiffness. Scale-free: a spring of 1e300 beside a beam, or EA 1e12 times EI, does not
         // make the beam's pivots look small, as a ratio to the largest pivot would.
-        const Eigen::VectorXd& D = ldlt_.vectorD();
+        const Eigen::VectorXd& D = ldlt_.pivots();
         negative_pivots_ = 0;
         pivot_ratio_ = std::numeric_limits<double>::infinity();
         Eigen::Index smallest_at = 0;
@@ -77,7 +77,7 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
         }
         // D is in the permuted order; report the equation it belongs to.
         weakest_ = order_inverse_.indices()[smallest_at];
-        if (ldlt_.info() == Eigen::Success && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
+        if (nonzero_pivots && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
     }
     // A zero pivot: either a singular matrix or an unlucky order for LDLᵀ without pivoting.
     if (!lu_analysed_) {
@@ -90,9 +90,19 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
-    if (using_lu_) return lu_.solve(b);
-    const Eigen::VectorXd x = ldlt_.solve(order_ * b);
-    return order_inverse_ * x;
+    Eigen::VectorXd x(b.size());
+    solve(b, x);
+    return x;
+}
+
+void LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+    if (using_lu_) {
+        x = lu_.solve(b);
+        return;
+    }
+    permuted_ = order_ * b;
+    ldlt_.solve_in_place(permuted_);
+    x = order_inverse_ * permuted_;
 }
 
 } // namespace plastica

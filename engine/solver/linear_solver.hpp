@@ -1,14 +1,14 @@
 // Solves K x = b for the symmetric tangent. LDLᵀ (no pivoting) tolerates the indefinite
 // tangent past a limit point and gives its inertia: the number of negative pivots counts the
 // eigenvalues below zero (Sylvester). The fill-reducing (AMD) order and the symbolic analysis
-// are computed once: K's lower triangle is then copied straight into the permuted upper
-// triangle the factorisation reads, through a fixed slot map. If a pivot vanishes, sparse LU
-// with partial pivoting takes over for that factorisation.
+// (sparse_ldlt.hpp) are computed once: K's lower triangle is then copied straight into the
+// permuted upper triangle the factorisation reads, through a fixed slot map. If a pivot
+// vanishes, sparse LU with partial pivoting takes over for that factorisation.
 #pragma once
 
 #include "solver/block_assembler.hpp"
+#include "solver/sparse_ldlt.hpp"
 
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <vector>
 
@@ -20,6 +20,8 @@ public:
     // must stay the one of the first call (the assembler keeps it fixed).
     bool factorize(const SparseMatrix& K);
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+    // The same into x, without allocating once x has its size (Newton's corrections).
+    void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
     // Pivots below zero_pivot of their own diagonal entry are round-off: neither counted as
     // negative nor trusted (LU takes over).
     static constexpr double zero_pivot = 1e-15;
@@ -35,10 +37,10 @@ private:
 
     Permutation order_;         // new position of each equation
     Permutation order_inverse_; // equation at each new position
-    SparseMatrix permuted_;     // upper triangle of order_·K·order_ᵀ
+    SparseMatrix permuted_k_;   // upper triangle of order_·K·order_ᵀ
     std::vector<int> source_;   // for each value of permuted_, its index in K's values
     std::vector<int> diagonal_slot_; // for each permuted equation, its diagonal's index in K's values
-    Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt_;
+    SparseLdlt ldlt_;
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
     bool analysed_ = false;
     bool lu_analysed_ = false;
@@ -46,6 +48,7 @@ private:
     int negative_pivots_ = 0;
     int weakest_ = -1;
     double pivot_ratio_ = 1.0;
+    mutable Eigen::VectorXd permuted_; // work space of solve
 };
 
 } // namespace plastica

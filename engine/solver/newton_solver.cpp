@@ -52,6 +52,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
     double lowest = std::numeric_limits<double>::infinity(); // of the corrections' residuals
     int last_lowest = 1;
     bool release = false; // re-decide frozen active sets at the next evaluation
+    Eigen::VectorXd du_r, du_f, du; // corrections for the residual, per unit load, and in all
     if (!problem.evaluate(0, false)) {
         result.failure = NewtonFailure::non_finite;
         return result;
@@ -137,14 +138,14 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             return result;
         }
         result.negative_pivots_seen = std::max(result.negative_pivots_seen, solver.negative_pivots());
-        const Eigen::VectorXd du_r = solver.solve(residual);
-        const Eigen::VectorXd du_f = solver.solve(load);
+        solver.solve(residual, du_r);
+        solver.solve(load, du_f);
         const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f);
         if (!std::isfinite(dl)) {
             result.failure = NewtonFailure::no_constraint_root;
             return result;
         }
-        Eigen::VectorXd du = du_r + dl * du_f;
+        du = du_r + dl * du_f;
         double step_dl = dl;
         if (!du.allFinite()) {
             result.failure = NewtonFailure::non_finite;
