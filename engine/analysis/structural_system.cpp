@@ -147,10 +147,15 @@ double StructuralSystem::trial_yield_advance() const {
 }
 
 Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {
-    Eigen::VectorXd free(free_count_);
+    Eigen::VectorXd free;
+    gather(full, free);
+    return free;
+}
+
+void StructuralSystem::gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const {
+    free.resize(free_count_);
     for (int i = 0; i < dof_count(); ++i)
         if (equation_[i] >= 0) free[equation_[i]] = full[i];
-    return free;
 }
 
 void StructuralSystem::scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const {

@@ -52,6 +52,7 @@ public:
     double trial_yield_advance() const;
 
     Eigen::VectorXd gather(const Eigen::VectorXd& full) const;
+    void gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const; // no allocation once sized
     void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;
 
     void commit();

@@ -16,9 +16,10 @@ bool StructureProblem::evaluate(int iteration, bool release) {
     const bool hinges_frozen = iteration >= hinge_freeze_ && !release;
     const bool fibres_frozen = iteration >= fibre_freeze_ && !release;
     if (!system_.evaluate(u_, ubar_, lambda_, contact_frozen, hinges_frozen, fibres_frozen)) return false;
-    const Eigen::VectorXd load = system_.gather(system_.load());
-    load_direction_ = load - system_.coupling();
-    residual_ = lambda_ * load - system_.gather(system_.internal_force());
+    system_.gather(system_.load(), load_);
+    system_.gather(system_.internal_force(), internal_);
+    load_direction_ = load_ - system_.coupling();
+    residual_ = lambda_ * load_ - internal_;
     return true;
 }
 

@@ -35,6 +35,7 @@ private:
     double& lambda_;
     const Eigen::VectorXd& ubar_;
     Eigen::VectorXd u_free_;
+    Eigen::VectorXd load_, internal_; // the free DOFs' reference load and internal force
     Eigen::VectorXd residual_;
     Eigen::VectorXd load_direction_;
     std::vector<int> prescribed_; // full DOF indices with ū ≠ 0

@@ -1,5 +1,7 @@
 #include "solver/block_assembler.hpp"
 
+#include <algorithm>
+
 namespace plastica {
 
 BlockAssembler::BlockAssembler(int size, const std::vector<std::vector<int>>& blocks)
@@ -27,6 +29,7 @@ BlockAssembler::BlockAssembler(int size, const std::vector<std::vector<int>>& bl
                 const int* hit = std::lower_bound(rows + begin, rows + end, eqs[a]);
                 slots[a * eqs.size() + b] = static_cast<int>(hit - rows);
             }
+        complete_.push_back(std::find(slots.begin(), slots.end(), -1) == slots.end());
         slots_.push_back(std::move(slots));
     }
 }

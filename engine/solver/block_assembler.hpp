@@ -22,6 +22,11 @@ public:
         const std::vector<int>& slots = slots_[block];
         const int n = static_cast<int>(values.rows());
         double* data = matrix_.valuePtr();
+        if (complete_[block]) { // no DOF left out: no test per entry
+            for (int a = 0; a < n; ++a)
+                for (int b = 0; b < n; ++b) data[slots[a * n + b]] += values(a, b);
+            return;
+        }
         for (int a = 0; a < n; ++a)
             for (int b = 0; b < n; ++b) {
                 const int slot = slots[a * n + b];
@@ -33,6 +38,7 @@ public:
 private:
     SparseMatrix matrix_;
     std::vector<std::vector<int>> slots_;
+    std::vector<bool> complete_; // per block: every entry has a slot
 };
 
 } // namespace plastica
