@@ -123,6 +123,15 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             if (it > 1) lowest = std::min(lowest, relative);
             if (it > 1 && relative <= lowest) last_lowest = it;
             if (it - std::max(last_lowest, 1) >= settings.stall_iterations) {
+                // Wandering within the stagnation band, active sets settled: the iterates swap
+                // across a kink of a piecewise-linear law at the round-off floor (a stiff
+                // membrane's), where no increment, however small, does better. Accepted as
+                // stagnation, as a floor reached directly is.
+                if (settled && relative <= settings.stagnation_factor * settings.residual_tolerance &&
+                    lowest <= settings.stagnation_factor * settings.residual_tolerance) {
+                    result.rule = Acceptance::stagnation;
+                    return result;
+                }
                 result.failure = NewtonFailure::diverged;
                 return result;
             }
