@@ -157,30 +157,8 @@ std::string PathFollowing::initial_mechanism() {
     return s.str();
 }
 
-PathFollowing::RoundOffFloor PathFollowing::round_off_floor() const {
-    // A displacement is known to about eps·|u|, so the residual of K·u cannot be brought below
-    // about eps·|K|·|u| (absolute values throughout): relative to the load, that is this
-    // state's floor. K is stored as its lower triangle.
-    const SparseMatrix& K = system_.tangent();
-    const Eigen::VectorXd u = system_.gather(u_).cwiseAbs();
-    Eigen::VectorXd floor = Eigen::VectorXd::Zero(u.size());
-    for (int col = 0; col < K.outerSize(); ++col)
-        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
-            const double k = std::abs(it.value());
-            floor[it.row()] += k * u[col];
-            if (it.row() != col) floor[col] += k * u[it.row()];
-        }
-    // The springs' share: their stiffness times the rounding of their node's displacement.
-    Eigen::VectorXd springs = Eigen::VectorXd::Zero(u_.size());
-    for (const FoundationSpring& s : model_.springs) {
-        const std::size_t at = static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(s.node);
-        const double k[3] = {s.kx, s.ky, s.krot};
-        for (std::size_t d = 0; d < 3; ++d) springs[at + d] += k[d] * std::abs(u_[at + d]);
-    }
-    const double load = std::abs(lambda_) * system_.gather(system_.load()).norm();
-    if (!(load > 0.0)) return {};
-    const double eps = std::numeric_limits<double>::epsilon();
-    return {eps * floor.norm() / load, eps * springs.norm() / load};
+RoundOffFloor PathFollowing::round_off_floor() const {
+    return system_.round_off_floor(u_, lambda_);
 }
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {

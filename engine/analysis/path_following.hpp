@@ -71,10 +71,7 @@ private:
     double next_increment(double h, double used, const NewtonResult& outcome, double yield_advance) const;
     bool tangent_shows_limit();
     // The residual, relative to the load, that the rounding of the displacements alone leaves
-    // (see the definition), and the part of it the foundation springs' penalties cause.
-    struct RoundOffFloor {
-        double total = 0.0, from_springs = 0.0;
-    };
+    // at the current state (StructuralSystem::round_off_floor).
     RoundOffFloor round_off_floor() const;
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plastica {
 
@@ -144,6 +145,33 @@ double StructuralSystem::trial_yield_advance() const {
     double advance = 0.0;
     for (const CorotationalBeam& e : elements_) advance = std::max(advance, e.trial_yield_advance());
     return advance;
+}
+
+RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, double load_factor) const {
+    // A displacement is known to about eps·|u|, so the residual of K·u cannot be brought below
+    // about eps·|K|·|u| (absolute values throughout): relative to the load, that is this
+    // state's floor. K is stored as its lower triangle.
+    const SparseMatrix& K = tangent();
+    const Eigen::VectorXd u = gather(u_full).cwiseAbs();
+    Eigen::VectorXd floor = Eigen::VectorXd::Zero(u.size());
+    for (int col = 0; col < K.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
+            const double k = std::abs(it.value());
+            floor[it.row()] += k * u[col];
+            if (it.row() != col) floor[col] += k * u[it.row()];
+        }
+    // The springs' share: their stiffness times the rounding of their node's displacement.
+    Eigen::VectorXd springs = Eigen::VectorXd::Zero(u_full.size());
+    for (std::size_t s = 0; s < foundation_.size(); ++s) {
+        const FoundationSpring& spring = foundation_.spring(s);
+        const std::size_t at = static_cast<std::size_t>(dofs_per_node) * static_cast<std::size_t>(spring.node);
+        const double k[3] = {spring.kx, spring.ky, spring.krot};
+        for (std::size_t d = 0; d < 3; ++d) springs[at + d] += k[d] * std::abs(u_full[at + d]);
+    }
+    const double load = std::abs(load_factor) * gather(load_).norm();
+    if (!(load > 0.0)) return {};
+    const double eps = std::numeric_limits<double>::epsilon();
+    return {eps * floor.norm() / load, eps * springs.norm() / load};
 }
 
 Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {

@@ -17,6 +17,10 @@
 
 namespace plastica {
 
+struct RoundOffFloor {
+    double total = 0.0, from_springs = 0.0;
+};
+
 class StructuralSystem {
 public:
     // fixed_load: the reference nodal loads (full DOF vector), which do not follow the structure.
@@ -50,6 +54,10 @@ public:
     // The largest advance of a section into its yielding range over the trial step, among
     // laws that integrate their stiffness explicitly (BasicLaw::trial_yield_advance).
     double trial_yield_advance() const;
+
+    // The residual, relative to the load at λ, that the rounding of the displacements u alone
+    // leaves at the last evaluation, and the part of it the foundation springs' penalties cause.
+    RoundOffFloor round_off_floor(const Eigen::VectorXd& u, double load_factor) const;
 
     Eigen::VectorXd gather(const Eigen::VectorXd& full) const;
     void gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const; // no allocation once sized

@@ -25,6 +25,7 @@ public:
     void move(const Eigen::VectorXd& dx, double dlambda) override;
     double load_factor() const override { return lambda_; }
     double state_norm() const override { return u_free_.norm(); }
+    double round_off_floor() const override { return system_.round_off_floor(u_, lambda_).total; }
     // Driven by platens alone, the residual is measured against the force they press with
     // (λ times their penalty stiffness would be the force on a rigid structure, far above it).
     double force_scale(double level) const override;

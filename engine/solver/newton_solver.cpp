@@ -11,6 +11,8 @@ namespace {
 // Corrections larger than this times the step so far (the first correction, or the start from
 // a guess) end the attempt as diverged.
 constexpr double max_correction_growth = 100.0;
+// A residual within this multiple of the state's round-off floor (an estimate of its order) is round-off.
+constexpr double round_off_margin = 10.0;
 } // namespace
 
 const char* to_string(Acceptance rule) {
@@ -123,12 +125,13 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             if (it > 1) lowest = std::min(lowest, relative);
             if (it > 1 && relative <= lowest) last_lowest = it;
             if (it - std::max(last_lowest, 1) >= settings.stall_iterations) {
-                // Wandering within the stagnation band, active sets settled: the iterates swap
-                // across a kink of a piecewise-linear law at the round-off floor (a stiff
-                // membrane's), where no increment, however small, does better. Accepted as
-                // stagnation, as a floor reached directly is.
+                // Wandering within the stagnation band and within a few times the state's
+                // round-off floor, active sets settled: the iterates swap across a kink of a
+                // piecewise-linear law at that floor (a stiff membrane's), where no increment,
+                // however small, does better. Accepted as stagnation, as a floor reached directly
+                // is. Above the floor, wandering is Newton's failure, and the increment is cut.
                 if (settled && relative <= settings.stagnation_factor * settings.residual_tolerance &&
-                    lowest <= settings.stagnation_factor * settings.residual_tolerance) {
+                    relative <= round_off_margin * problem.round_off_floor()) {
                     result.rule = Acceptance::stagnation;
                     return result;
                 }

@@ -29,6 +29,8 @@ public:
     virtual void move(const Eigen::VectorXd& dx, double dlambda) = 0;
     virtual double load_factor() const = 0;
     virtual double state_norm() const = 0; // ‖x‖, for the round-off floor of a correction
+    // The relative residual that the rounding of the state alone leaves (0: not known).
+    virtual double round_off_floor() const { return 0.0; }
     // The force the residual is measured against, given the load level: the reference load at
     // that level, unless the problem knows a truer scale (the force a platen presses with).
     virtual double force_scale(double level) const { return level * load_direction().norm(); }
