@@ -30,7 +30,11 @@ double ArcLength::load_change(int iteration, const Eigen::VectorXd& increment,
     const double qb = 2.0 * base.dot(du_load);
     const double qc = base.squaredNorm() - h_ * h_;
     const double disc = qb * qb - 4.0 * qa * qc;
-    if (disc < 0.0) return no_root; // no point on the arc: cut the step
+    // No point of this correction's line lies on the arc (the residual's part alone leaves the
+    // sphere, as near a sharp turn of the path). When asked, take the line's point nearest to
+    // it: the increment's length is off by what the missing root would have fixed, and the
+    // iterations that follow draw it back to the arc where they can.
+    if (disc < 0.0) return nearest_when_no_root_ && qa > 0.0 ? -qb / (2.0 * qa) : no_root;
     const double root = std::sqrt(disc);
     const double l1 = (-qb + root) / (2.0 * qa);
     const double l2 = (-qb - root) / (2.0 * qa);

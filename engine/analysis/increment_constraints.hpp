@@ -35,13 +35,17 @@ class ArcLength final : public IncrementConstraint {
 public:
     // previous: the last converged increment (empty at the start); its direction chooses the
     // predictor's sign (Feng's criterion), which passes limit points without pivot tracking.
-    ArcLength(double length, const Eigen::VectorXd& previous) : h_(length), previous_(previous) {}
+    // nearest_when_no_root: a correction whose line misses the arc takes the line's point
+    // nearest to it, instead of failing (which cuts the step).
+    ArcLength(double length, const Eigen::VectorXd& previous, bool nearest_when_no_root = false)
+        : h_(length), previous_(previous), nearest_when_no_root_(nearest_when_no_root) {}
     double load_change(int iteration, const Eigen::VectorXd& increment, const Eigen::VectorXd& du_residual,
                        const Eigen::VectorXd& du_load) override;
 
 private:
     double h_;
     const Eigen::VectorXd& previous_;
+    bool nearest_when_no_root_;
 };
 
 } // namespace plastica

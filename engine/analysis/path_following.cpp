@@ -118,7 +118,9 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         break;
     }
     case Scheme::arc_length: {
-        ArcLength c(h, previous_increment_);
+        // After three cuts of this step a root-less corrector takes the line's point nearest
+        // the arc instead of cutting on (before, a cut is what settles most such corrections).
+        ArcLength c(h, previous_increment_, failures_in_step_ >= 3);
         result = solve_increment(problem, c, settings, solver_, hook, start);
         break;
     }
@@ -210,7 +212,8 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
-    int failures_in_step = 0; // attempts of the coming step that failed
+    int& failures_in_step = failures_in_step_; // attempts of the coming step that failed
+    failures_in_step = 0;
     summary.status = RunStatus::step_limit;
     summary.reason = "step limit reached";
     while (step_ < a.max_steps) {

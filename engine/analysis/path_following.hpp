@@ -62,6 +62,7 @@ public:
 private:
     RunSummary run_steps(const std::vector<StepObserver>& observers, const RunControl& control, RunSummary& summary);
     // extrapolate: start from the path's quadratic extrapolation when there is one.
+    int failures_in_step_ = 0; // attempts of the coming step that failed
     NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate);
     // Where the current state lies along the path: the controlled displacement, the load
     // factor or the arc length, by the scheme.
