@@ -1,0 +1,52 @@
+// The series writer's thread: steps reach the sink in order, and the first one it cannot take
+// ends the writing, is reported with its step, and stops the analysis at its next hand-over.
+#include "background_output.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <stdexcept>
+#include <vector>
+
+using namespace plastica;
+using namespace plastica::cli;
+
+namespace {
+StepResult step(int k) {
+    StepResult r;
+    r.step = k;
+    return r;
+}
+} // namespace
+
+TEST_CASE("Background output hands every step to the sink in order", "[cli][output]") {
+    std::vector<int> written;
+    BackgroundOutput output([&](const StepResult& r) { written.push_back(r.step); }, 4);
+    for (int k = 0; k < 100; ++k) output.push(step(k)); // more than the queue holds
+    output.finish();
+    REQUIRE(written.size() == 100u);
+    for (int k = 0; k < 100; ++k) CHECK(written[static_cast<std::size_t>(k)] == k);
+    CHECK_FALSE(output.failure());
+}
+
+TEST_CASE("Background output stops at the first step the sink cannot take", "[cli][output]") {
+    std::vector<int> written;
+    BackgroundOutput output(
+        [&](const StepResult& r) {
+            if (r.step == 2) throw std::runtime_error("disk full");
+            written.push_back(r.step);
+        },
+        4);
+    bool refused = false;
+    for (int k = 0; k < 100 && !refused; ++k) try {
+            output.push(step(k));
+        } catch (const std::runtime_error& e) {
+            refused = true;
+            CHECK(std::string(e.what()) == "disk full");
+        }
+    output.finish();
+    CHECK(refused); // the analysis hears of it before its hundredth step
+    REQUIRE(output.failure());
+    CHECK(output.failure()->step == 2);
+    CHECK(output.failure()->message == "disk full");
+    CHECK(written == std::vector<int>{0, 1}); // nothing after the failed step
+}
