@@ -212,8 +212,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
-    int& failures_in_step = failures_in_step_; // attempts of the coming step that failed
-    failures_in_step = 0;
+    failures_in_step_ = 0;
     summary.status = RunStatus::step_limit;
     summary.reason = "step limit reached";
     while (step_ < a.max_steps) {
@@ -253,10 +252,10 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             // tolerance after three cuts in a row, cutting on could only spend time (a 100 000-
             // element cantilever cut its first step twenty times for 16 s before saying so). A
             // single failure says little: its last iterate may be far off, and so its floor.
-            ++failures_in_step;
+            ++failures_in_step_;
             const RoundOffFloor floor_at_failure =
                 outcome.failure != NewtonFailure::non_finite ? round_off_floor() : RoundOffFloor{};
-            const bool hopeless = failures_in_step > 3 && floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
+            const bool hopeless = failures_in_step_ > 3 && floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
             const bool giving_up = std::abs(0.5 * step_h) < h_min || hopeless;
             // Under load control, the tangent where the failed increment ended tells whether
             // the structure has passed its limit (a plastic mechanism or buckling); it is read
@@ -323,7 +322,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             continue;
         }
         system_.commit();
-        failures_in_step = 0;
+        failures_in_step_ = 0;
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
         arc_length_ += previous_increment_.norm();

@@ -55,30 +55,27 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
     const bool nonzero_pivots = ldlt_.factorize(permuted_k_);
     using_lu_ = false;
     // Inertia and the weakest pivot, also when a zero pivot stopped the factorisation (its D
-    // holds that zero): it names the DOF of a mechanism.
-    {
-        // Each pivot against its own diagonal entry: what elimination left of that equation's
-        // stiffness. Scale-free: a spring of 1e300 beside a beam, or EA 1e12 times EI, does not
-        // make the beam's pivots look small, as a ratio to the largest pivot would.
-        const Eigen::VectorXd& D = ldlt_.pivots();
-        negative_pivots_ = 0;
-        pivot_ratio_ = std::numeric_limits<double>::infinity();
-        Eigen::Index smallest_at = 0;
-        for (Eigen::Index k = 0; k < D.size(); ++k) {
-            const int slot = diagonal_slot_[static_cast<std::size_t>(k)];
-            const double diagonal = slot >= 0 ? std::abs(values[slot]) : 0.0;
-            const double ratio = diagonal > 0.0 ? std::abs(D[k]) / diagonal : 0.0;
-            // A pivot within round-off of zero has no sign.
-            if (D[k] < 0.0 && ratio > zero_pivot) ++negative_pivots_;
-            if (!(ratio >= pivot_ratio_)) {
-                pivot_ratio_ = ratio;
-                smallest_at = k;
-            }
+    // holds that zero): it names the DOF of a mechanism. Each pivot against its own diagonal entry: what elimination left of that equation's
+    // stiffness. Scale-free: a spring of 1e300 beside a beam, or EA 1e12 times EI, does not
+    // make the beam's pivots look small, as a ratio to the largest pivot would.
+    const Eigen::VectorXd& D = ldlt_.pivots();
+    negative_pivots_ = 0;
+    pivot_ratio_ = std::numeric_limits<double>::infinity();
+    Eigen::Index smallest_at = 0;
+    for (Eigen::Index k = 0; k < D.size(); ++k) {
+        const int slot = diagonal_slot_[static_cast<std::size_t>(k)];
+        const double diagonal = slot >= 0 ? std::abs(values[slot]) : 0.0;
+        const double ratio = diagonal > 0.0 ? std::abs(D[k]) / diagonal : 0.0;
+        // A pivot within round-off of zero has no sign.
+        if (D[k] < 0.0 && ratio > zero_pivot) ++negative_pivots_;
+        if (!(ratio >= pivot_ratio_)) {
+            pivot_ratio_ = ratio;
+            smallest_at = k;
         }
-        // D is in the permuted order; report the equation it belongs to.
-        weakest_ = order_inverse_.indices()[smallest_at];
-        if (nonzero_pivots && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
     }
+    // D is in the permuted order; report the equation it belongs to.
+    weakest_ = order_inverse_.indices()[smallest_at];
+    if (nonzero_pivots && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
     // A zero pivot: either a singular matrix or an unlucky order for LDLᵀ without pivoting.
     if (!lu_analysed_) {
         lu_.analyzePattern(K);

@@ -38,7 +38,7 @@ private:
     Permutation order_;         // new position of each equation
     Permutation order_inverse_; // equation at each new position
     SparseMatrix permuted_k_;   // upper triangle of order_·K·order_ᵀ
-    std::vector<int> source_;   // for each value of permuted_, its index in K's values
+    std::vector<int> source_;   // for each value of permuted_k_, its index in K's values
     std::vector<int> diagonal_slot_; // for each permuted equation, its diagonal's index in K's values
     SparseLdlt ldlt_;
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
