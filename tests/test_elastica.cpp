@@ -92,17 +92,22 @@ TEST_CASE("Tip displacements under a tip load match Mattiasson's elastica and co
     CHECK(e20 < e5);
 }
 
-TEST_CASE("A slightly imperfect cantilever column buckles at π²EI/4L² and follows the elastica", "[elastica]") {
+namespace {
+// A cantilever column along y, clamped at the bottom, under P = π²EI/4L² (load factor P/Pcr); a
+// lateral load of 1e-4 P triggers the buckling. Pushed until the top has moved 0.76 L sideways.
+std::string buckling_column(const std::string& scheme, double increment) {
     const double Pcr = M_PI * M_PI * EI / (4.0 * L * L);
-    // Column along y, clamped at the bottom; a lateral load of 1e-4 P triggers the buckling.
-    const std::string scene =
-        "[scene]\nname = \"column\"\n[[material]]\nname = \"m\"\nE = 1.0\n[[section]]\nname = \"s\"\nmaterial = \"m\"\n"
-        "A = 1e6\nI = 1.0\n[[line]]\nstart = [0.0, 0.0]\nend = [0.0, 1.0]\nelements = 20\nsection = \"s\"\n"
-        "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
-        "[[load]]\nat = [0.0, 1.0]\nfy = " + num(-Pcr) + "\nfx = " + num(1e-4 * Pcr) + "\n"
-        "[analysis]\nscheme = \"arc_length\"\nincrement = 0.02\nmax_increment = 0.05\ncontrol_at = [0.0, 1.0]\n"
-        "control_dof = \"ux\"\ntarget_displacement = 0.76\nresidual_tolerance = 1e-8\n";
-    const Run r = run_scene(scene);
+    return "[scene]\nname = \"column\"\n[[material]]\nname = \"m\"\nE = 1.0\n[[section]]\nname = \"s\"\nmaterial = \"m\"\n"
+           "A = 1e6\nI = 1.0\n[[line]]\nstart = [0.0, 0.0]\nend = [0.0, 1.0]\nelements = 20\nsection = \"s\"\n"
+           "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"uy\", \"rz\"]\n"
+           "[[load]]\nat = [0.0, 1.0]\nfy = " + num(-Pcr) + "\nfx = " + num(1e-4 * Pcr) + "\n"
+           "[analysis]\nscheme = \"" + scheme + "\"\nincrement = " + num(increment) + "\nmax_increment = 0.05\n"
+           "control_at = [0.0, 1.0]\ncontrol_dof = \"ux\"\ntarget_displacement = 0.76\nresidual_tolerance = 1e-8\n";
+}
+} // namespace
+
+TEST_CASE("A slightly imperfect cantilever column buckles at π²EI/4L² and follows the elastica", "[elastica]") {
+    const Run r = run_scene(buckling_column("arc_length", 0.02));
     REQUIRE(r.summary.status == RunStatus::completed);
     auto tip = [](const StepResult& s) { return s.control_displacement; };
     auto ratio = [](const StepResult& s) { return s.load_factor; };
@@ -110,6 +115,20 @@ TEST_CASE("A slightly imperfect cantilever column buckles at π²EI/4L² and fol
     CHECK(value_at(r.steps, 0.11076, tip, ratio) == Approx(1.00382).epsilon(3e-3));
     CHECK(value_at(r.steps, 0.42224, tip, ratio) == Approx(1.06366).epsilon(3e-3));
     CHECK(value_at(r.steps, 0.71950, tip, ratio) == Approx(1.29389).epsilon(3e-3));
+}
+
+TEST_CASE("An arc-length run ends exactly on its target, at the equilibrium found there under displacement control", "[elastica][arc_length]") {
+    // The arc's steps pass 0.76 wherever their lengths put them; the step past it is taken
+    // again under displacement control from the state before it.
+    const Run arc = run_scene(buckling_column("arc_length", 0.02));
+    const Run controlled = run_scene(buckling_column("displacement_control", 0.02));
+    REQUIRE(arc.summary.status == RunStatus::completed);
+    REQUIRE(controlled.summary.status == RunStatus::completed);
+    CHECK(arc.steps.back().control_displacement == Approx(0.76).margin(1e-12));
+    CHECK(controlled.steps.back().control_displacement == Approx(0.76).margin(1e-12));
+    // Two equilibria at the same displacement, each within 1e-8 of the load out of balance.
+    CHECK(arc.steps.back().load_factor == Approx(controlled.steps.back().load_factor).epsilon(1e-6));
+    for (std::size_t k = 1; k + 1 < arc.steps.size(); ++k) CHECK(arc.steps[k].control_displacement < 0.76);
 }
 
 TEST_CASE("Lee's frame is traced through its limit point near PL²/EI = 18.5", "[elastica][arc_length]") {
@@ -127,6 +146,7 @@ TEST_CASE("Lee's frame is traced through its limit point near PL²/EI = 18.5", "
     for (const StepResult& s : r.steps) lowest = std::min(lowest, s.load);
     CHECK(lowest < -0.5 * pmax);
     CHECK(r.steps.back().load > 0.0);
+    CHECK(r.steps.back().control_displacement == Approx(90.0).margin(1e-9)); // landed on its target
     bool passed_limit_with_negative_pivot = false;
     for (const StepResult& s : r.steps) passed_limit_with_negative_pivot |= s.negative_pivots > 0;
     CHECK(passed_limit_with_negative_pivot);

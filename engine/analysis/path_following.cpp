@@ -82,6 +82,10 @@ double PathFollowing::path_parameter() const {
 }
 
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control, bool extrapolate) {
+    return attempt_increment(h, control, extrapolate, analysis_.scheme);
+}
+
+NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control, bool extrapolate, Scheme scheme) {
     const AnalysisSpec& a = analysis_;
     StructureProblem problem(system_, u_, lambda_, ubar_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
@@ -106,7 +110,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         settings.fail_fast = true; // the tangent's predictor is the fallback
     }
     NewtonResult result;
-    switch (a.scheme) {
+    switch (scheme) {
     case Scheme::load_control: {
         LoadControl c(h);
         result = solve_increment(problem, c, settings, solver_, hook, start);
@@ -243,6 +247,16 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             system_.revert();
             outcome = attempt_increment(step_h, control, false);
         }
+        // An arc-length step past the stage's target is taken again from where it started, under
+        // the control that lands on the target exactly (a step that fails to land is cut).
+        if (outcome.converged() && a.scheme == Scheme::arc_length && past_target() > 1e-9 * std::abs(a.initial_increment)) {
+            summary.iterations += outcome.iterations;
+            u_ = u_saved;
+            lambda_ = lambda_saved;
+            system_.revert();
+            const double remaining = a.target_load_factor ? *a.target_load_factor - lambda_ : *a.target_displacement - control_value(u_);
+            outcome = attempt_increment(remaining, control, false, a.target_load_factor ? Scheme::load_control : Scheme::displacement_control);
+        }
         summary.iterations += outcome.iterations;
         if (outcome.rule == Acceptance::residual) ++summary.accepted_by_residual;
         if (outcome.rule == Acceptance::stagnation) ++summary.accepted_by_stagnation;
@@ -365,17 +379,21 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
 }
 
 bool PathFollowing::target_reached() const {
-    const AnalysisSpec& a = analysis_;
     // A target counts as reached within round-off of the increment that led to it.
-    const double slack = 1e-9 * std::abs(a.initial_increment);
+    return past_target() >= -1e-9 * std::abs(analysis_.initial_increment);
+}
+
+double PathFollowing::past_target() const {
+    const AnalysisSpec& a = analysis_;
+    if (!a.target_load_factor && !a.target_displacement) return -std::numeric_limits<double>::infinity();
     if (stage_ == 0) {
-        if (a.target_load_factor) return std::abs(lambda_) >= std::abs(*a.target_load_factor) - slack;
-        return a.target_displacement && control_value(u_) >= *a.target_displacement - slack;
+        if (a.target_load_factor) return std::abs(lambda_) - std::abs(*a.target_load_factor);
+        return control_value(u_) - *a.target_displacement;
     }
-    // Later stages go either way: reached once the value has come to the target.
+    // Later stages go either way: past once the value has come to the target.
     const double value = a.target_load_factor ? lambda_ : control_value(u_);
     const double target = a.target_load_factor ? *a.target_load_factor : *a.target_displacement;
-    return (value - target) * direction_ >= -slack;
+    return (value - target) * direction_;
 }
 
 double PathFollowing::begin_stage(std::size_t k) {

@@ -64,6 +64,8 @@ private:
     // extrapolate: start from the path's quadratic extrapolation when there is one.
     int failures_in_step_ = 0; // attempts of the coming step that failed
     NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate);
+    // One increment under the given scheme instead of the stage's (an arc-length step's landing).
+    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, Scheme scheme);
     // Where the current state lies along the path: the controlled displacement, the load
     // factor or the arc length, by the scheme.
     double path_parameter() const;
@@ -80,6 +82,9 @@ private:
     StepResult make_result(int step, int iterations, Acceptance rule) const;
     // Whether the current stage's target is reached (within round-off of its increment).
     bool target_reached() const;
+    // How far the current state lies past the stage's target, toward it positive (in load
+    // factor or controlled displacement); −∞ without a target.
+    double past_target() const;
     // Makes stages[k] of the model the current stage; returns its first increment, signed
     // toward its target.
     double begin_stage(std::size_t k);
