@@ -203,6 +203,36 @@ TEST_CASE("Supports and loads are drawn where the scene has them, and --hide lea
     CHECK(count_pixels(frame, load, 0, structure_right, band_bottom, middle) > 20);
 }
 
+TEST_CASE("A support on a symmetric structure's centre line is drawn on one side, wherever round-off puts its node", "[render]") {
+    unsetenv("DISPLAY");
+    // A pinned triangle whose apex is held sideways only: the guide's ground stands beside the
+    // apex, on the side away from the structure, which on the centre line is the left. Its
+    // node 1e-12 left or right of the centre must not turn the symbol round.
+    auto drawn = [](const std::string& x, const std::string& tag) {
+        const Model model = read_scene_text(
+            "[scene]\nname = \"apex\"\n[[material]]\nname = \"m\"\nE = 1.0e6\n[[section]]\nname = \"s\"\nmaterial = \"m\"\n"
+            "A = 1.0\nI = 1.0\n[[line]]\nstart = [-5.0, 0.0]\nend = [" + x + ", 5.0]\nelements = 2\nsection = \"s\"\n"
+            "[[line]]\nstart = [" + x + ", 5.0]\nend = [5.0, 0.0]\nelements = 2\nsection = \"s\"\n"
+            "[[support]]\nat = [-5.0, 0.0]\nfix = [\"ux\", \"uy\"]\n[[support]]\nat = [5.0, 0.0]\nfix = [\"ux\", \"uy\"]\n"
+            "[[support]]\nat = [" + x + ", 5.0]\nfix = [\"ux\"]\n[[load]]\nat = [" + x + ", 5.0]\nfy = -1.0\n"
+            "[analysis]\nscheme = \"load_control\"\nincrement = 1.0\ntarget_load_factor = 1.0\n",
+            "apex.toml");
+        const fs::path series = solved_series_of(model, 1, tag);
+        render_series(series.string(), small(series / "pictures"));
+        return read_png((series / "pictures" / "frames" / "frame_000000.png").string());
+    };
+    const auto left = drawn("-1e-12", "apex_left"), right = drawn("1e-12", "apex_right");
+    const auto support = [](Pixel p) { return is(p, colour::support); };
+    // Both pictures alike, and the guide's symbol in the left half of the structure view.
+    CHECK(count_pixels(left, support) == count_pixels(right, support));
+    const double top = band_bottom + 0.5 * (1 - band_bottom); // above the pins
+    const long guide_left = count_pixels(right, support, 0, 0.5 * structure_right, band_bottom, top);
+    const long guide_right = count_pixels(right, support, 0.5 * structure_right, structure_right, band_bottom, top);
+    CHECK(guide_left > 40);
+    CHECK(guide_right < guide_left / 4);
+    CHECK(count_pixels(left, support, 0, 0.5 * structure_right, band_bottom, top) == guide_left);
+}
+
 TEST_CASE("A stiff structure drawn with --magnify shows its displacements enlarged", "[render]") {
     unsetenv("DISPLAY");
     // A cantilever of length 10 whose tip moves down by 0.01 (PL³/3EI): 0.1 % of its length.

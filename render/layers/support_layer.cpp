@@ -122,8 +122,11 @@ private:
         // on the side away from the structure).
         double u[2] = {0.0, 1.0};
         if (!uy) {
+            // A node on the centre line (a symmetric structure's top) has no side away from
+            // the structure: the left, whichever side round-off puts it on.
             const double cx = 0.5 * (summary_.bounds[0] + summary_.bounds[1]);
-            u[0] = p[0] < cx ? 1.0 : -1.0, u[1] = 0.0;
+            const double on_centre = 1e-6 * (summary_.bounds[1] - summary_.bounds[0]);
+            u[0] = p[0] < cx + on_centre ? 1.0 : -1.0, u[1] = 0.0;
         }
         const double t[2] = {-u[1], u[0]};
         const double h = 15 * px, w = 9 * px;
