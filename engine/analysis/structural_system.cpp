@@ -87,7 +87,8 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
                                 bool freeze_active, bool freeze_hinges, bool freeze_fibres) {
     internal_.setZero();
     coupling_.setZero();
-    assembler_.set_zero();
+    tangent_assembled_ = false;
+    evaluated_load_factor_ = load_factor;
     Vector6 d, f;
     Matrix6 k;
     int dofs[6];
@@ -99,23 +100,22 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         }
         for (int a = 0; a < 6; ++a) d[a] = u[dofs[a]];
         elements_[e].freeze_states(distributed_[e] ? freeze_fibres : freeze_hinges);
-        elements_[e].compute(d, f, &k);
-        if (!pressure_.empty() && pressure_.pressure(e) != 0.0) k += pressure_.stiffness(e, load_factor);
-        if (!f.allFinite() || !k.allFinite()) {
-            non_finite_where_ = "element " + std::to_string(e + 1) + " (nodes " +
-                                std::to_string(spec.node_i + 1) + "–" +
-                                std::to_string(spec.node_j + 1) + ")";
+        elements_[e].compute(d, f, nullptr);
+        if (!f.allFinite()) {
+            name_non_finite(e);
             return false;
         }
         for (int a = 0; a < 6; ++a) internal_[dofs[a]] += f[a];
         const std::vector<int>& held = held_dofs_[e];
-        for (int a = 0; a < 6 && !held.empty(); ++a) {
+        if (held.empty()) continue;
+        // Prescribed displacements act on the free DOFs through the element's tangent.
+        if (!element_tangent(e, k)) return false;
+        for (int a = 0; a < 6; ++a) {
             const int row = equation_[dofs[a]];
             if (row < 0) continue;
             for (int b : held)
                 if (ubar[dofs[b]] != 0.0) coupling_[row] += k(a, b) * ubar[dofs[b]];
         }
-        assembler_.add(e, k);
     }
     if (!pressure_.empty()) {
         load_ = fixed_load_;
@@ -130,9 +130,44 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         const Eigen::Vector3d rate = foundation_.load_rate(s);
         for (int d = 0; d < dofs_per_node; ++d)
             if (rate[d] != 0.0 && equation_[base + d] >= 0) coupling_[equation_[base + d]] += rate[d];
-        assembler_.add(elements_.size() + s, foundation_.tangent(s));
     }
     return true;
+}
+
+void StructuralSystem::name_non_finite(std::size_t e) const {
+    const ElementSpec& spec = element_specs_[e];
+    non_finite_where_ = "element " + std::to_string(e + 1) + " (nodes " + std::to_string(spec.node_i + 1) + "–" +
+                        std::to_string(spec.node_j + 1) + ")";
+}
+
+bool StructuralSystem::element_tangent(std::size_t e, Matrix6& k) const {
+    elements_[e].tangent(k);
+    if (!pressure_.empty() && pressure_.pressure(e) != 0.0) k += pressure_.stiffness(e, evaluated_load_factor_);
+    if (k.allFinite()) return true;
+    name_non_finite(e);
+    return false;
+}
+
+void StructuralSystem::assemble_tangent() const {
+    assembler_.set_zero();
+    tangent_finite_ = true;
+    Matrix6 k;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        tangent_finite_ = element_tangent(e, k) && tangent_finite_;
+        assembler_.add(e, k);
+    }
+    for (std::size_t s = 0; s < foundation_.size(); ++s) assembler_.add(elements_.size() + s, foundation_.tangent(s));
+    tangent_assembled_ = true;
+}
+
+const SparseMatrix& StructuralSystem::tangent() const {
+    if (!tangent_assembled_) assemble_tangent();
+    return assembler_.matrix();
+}
+
+bool StructuralSystem::tangent_finite() const {
+    if (!tangent_assembled_) assemble_tangent();
+    return tangent_finite_;
 }
 
 bool StructuralSystem::hinge_states_consistent() const {
@@ -200,6 +235,8 @@ void StructuralSystem::commit() {
 }
 
 void StructuralSystem::revert() {
+    // The tangent stays that of the last evaluation, as the elements' trial states go back.
+    if (!tangent_assembled_) assemble_tangent();
     for (CorotationalBeam& e : elements_) e.revert();
 }
 

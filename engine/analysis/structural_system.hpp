@@ -33,7 +33,8 @@ public:
 
     // Evaluates at the full displacement vector u and load factor λ (which scales the load
     // stiffness of follower pressure); ubar is the prescribed-displacement direction. Returns
-    // false (and names the element) when a force is not finite.
+    // false (and names the element) when a force is not finite. The tangent is assembled when
+    // first asked for: a converged state's is mostly not needed (the next step starts elsewhere).
     bool evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, double load_factor, bool freeze_active,
                   bool freeze_hinges = false, bool freeze_fibres = false);
 
@@ -41,7 +42,10 @@ public:
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū + platens, free DOFs
     // Reference loads at the evaluated state, per unit λ: the fixed ones plus follower pressure.
     const Eigen::VectorXd& load() const { return load_; }
-    const SparseMatrix& tangent() const { return assembler_.matrix(); }
+    // The tangent at the last evaluation, assembled on first use.
+    const SparseMatrix& tangent() const;
+    // Whether that tangent is finite; if not, non_finite_where() names the element.
+    bool tangent_finite() const;
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
     // No load, no prescribed displacement: moving bases drive the structure.
@@ -85,10 +89,18 @@ private:
     Eigen::VectorXd load_;
     int free_count_ = 0;
     std::vector<int> equation_;
-    BlockAssembler assembler_;
+    // Assembled on demand from the elements' and springs' trial states (tangent()).
+    void assemble_tangent() const;
+    bool element_tangent(std::size_t e, Matrix6& k) const; // false (and names it) if not finite
+    void name_non_finite(std::size_t e) const;
+
+    mutable BlockAssembler assembler_;
+    mutable bool tangent_assembled_ = false;
+    mutable bool tangent_finite_ = true;
+    double evaluated_load_factor_ = 0.0; // of the last evaluation: follower pressure's stiffness
     Eigen::VectorXd internal_;
     Eigen::VectorXd coupling_;
-    std::string non_finite_where_;
+    mutable std::string non_finite_where_;
     std::vector<bool> on_moving_base_; // per foundation spring
     bool driven_by_platens_ = false;
 };

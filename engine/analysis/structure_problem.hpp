@@ -21,6 +21,7 @@ public:
     const Eigen::VectorXd& residual() const override { return residual_; }
     const Eigen::VectorXd& load_direction() const override { return load_direction_; }
     const SparseMatrix& tangent() const override { return system_.tangent(); }
+    bool tangent_finite() const override { return system_.tangent_finite(); }
     bool settled() const override;
     void move(const Eigen::VectorXd& dx, double dlambda) override;
     double load_factor() const override { return lambda_; }

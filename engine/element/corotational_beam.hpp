@@ -35,6 +35,8 @@ public:
     // Trial state from the global displacements d = [u_i v_i θ_i u_j v_j θ_j]; returns the
     // internal force vector and, if asked, the tangent.
     void compute(const Vector6& d, Vector6& force, Matrix6* tangent);
+    // The tangent at the last trial state (after compute).
+    void tangent(Matrix6& k) const;
     void commit();
     void revert();
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }
@@ -53,6 +55,8 @@ private:
     double alpha_committed_ = 0.0;
     double alpha_trial_ = 0.0;
     double length_trial_ = 0.0;
+    double c_trial_ = 1.0, s_trial_ = 0.0;            // the trial chord's direction
+    Eigen::Matrix3d k_trial_ = Eigen::Matrix3d::Zero(); // the basic law's trial tangent
     Eigen::Vector3d q_trial_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d q_committed_ = Eigen::Vector3d::Zero();
     double length_committed_ = 0.0;

@@ -145,6 +145,10 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         }
         if (it == settings.max_iterations) break;
 
+        if (!problem.tangent_finite()) {
+            result.failure = NewtonFailure::non_finite;
+            return result;
+        }
         if (!solver.factorize(problem.tangent())) {
             result.failure = NewtonFailure::singular;
             return result;

@@ -17,13 +17,15 @@ namespace plastica {
 class NewtonProblem {
 public:
     virtual ~NewtonProblem() = default;
-    // Evaluates residual and tangent at the current state at the given iteration of the
-    // increment. State-dependent parts (contact, hinges) may keep their previous choice after
-    // some iterations; `release` asks them to decide afresh. False when a value is not finite.
+    // Evaluates the residual at the current state at the given iteration of the increment (the
+    // tangent there may wait until asked for). State-dependent parts (contact, hinges) may keep
+    // their previous choice after some iterations; `release` asks them to decide afresh. False
+    // when a value is not finite.
     virtual bool evaluate(int iteration, bool release) = 0;
     virtual const Eigen::VectorXd& residual() const = 0;       // λ f − r(x), free DOFs
     virtual const Eigen::VectorXd& load_direction() const = 0; // ∂R/∂λ
     virtual const SparseMatrix& tangent() const = 0;           // ∂r/∂x
+    virtual bool tangent_finite() const { return true; } // of the tangent at the evaluated state
     // Active sets unchanged by the last evaluation and consistent with the state.
     virtual bool settled() const { return true; }
     virtual void move(const Eigen::VectorXd& dx, double dlambda) = 0;
