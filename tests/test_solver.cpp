@@ -185,6 +185,14 @@ TEST_CASE("The replayed sparse LDLᵀ gives Eigen's SimplicialLDLT to the last b
         const Eigen::VectorXd expected = eigen.solve(b);
         CHECK((x.array() == expected.array()).all());
         CHECK((full * x - b).norm() <= 1e-8 * b.norm() * (1.0 + full.norm()));
+        // Two right-hand sides in one pass, zeros in different places: each as solved alone.
+        Eigen::VectorXd c(n);
+        for (int i = 0; i < n; ++i) c[i] = i % 4 == 1 ? 0.0 : value(random);
+        Eigen::VectorXd x2 = b, y2 = c, y = c;
+        replay.solve_in_place(x2, y2);
+        replay.solve_in_place(y);
+        CHECK((x2.array() == x.array()).all());
+        CHECK((y2.array() == y.array()).all());
     }
     // [[1, 1], [1, 1]]: the second pivot is exactly zero.
     SparseMatrix singular(2, 2);

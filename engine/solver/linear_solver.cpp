@@ -102,4 +102,18 @@ void LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     x = order_inverse_ * permuted_;
 }
 
+void LinearSolver::solve(const Eigen::VectorXd& b1, const Eigen::VectorXd& b2, Eigen::VectorXd& x1,
+                         Eigen::VectorXd& x2) const {
+    if (using_lu_) {
+        x1 = lu_.solve(b1);
+        x2 = lu_.solve(b2);
+        return;
+    }
+    permuted_ = order_ * b1;
+    permuted2_ = order_ * b2;
+    ldlt_.solve_in_place(permuted_, permuted2_);
+    x1 = order_inverse_ * permuted_;
+    x2 = order_inverse_ * permuted2_;
+}
+
 } // namespace plastica

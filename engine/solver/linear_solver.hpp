@@ -22,6 +22,8 @@ public:
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
     // The same into x, without allocating once x has its size (Newton's corrections).
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+    // Two right-hand sides in one pass over the factor, each with the bits solve() gives it.
+    void solve(const Eigen::VectorXd& b1, const Eigen::VectorXd& b2, Eigen::VectorXd& x1, Eigen::VectorXd& x2) const;
     // Pivots below zero_pivot of their own diagonal entry are round-off: neither counted as
     // negative nor trusted (LU takes over).
     static constexpr double zero_pivot = 1e-15;
@@ -48,7 +50,7 @@ private:
     int negative_pivots_ = 0;
     int weakest_ = -1;
     double pivot_ratio_ = 1.0;
-    mutable Eigen::VectorXd permuted_; // work space of solve
+    mutable Eigen::VectorXd permuted_, permuted2_; // work space of solve
 };
 
 } // namespace plastica

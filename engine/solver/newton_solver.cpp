@@ -154,8 +154,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             return result;
         }
         result.negative_pivots_seen = std::max(result.negative_pivots_seen, solver.negative_pivots());
-        solver.solve(residual, du_r);
-        solver.solve(load, du_f);
+        solver.solve(residual, load, du_r, du_f);
         const double dl = constraint.load_change(it + first_constraint_iteration, result.increment, du_r, du_f);
         if (!std::isfinite(dl)) {
             result.failure = NewtonFailure::no_constraint_root;

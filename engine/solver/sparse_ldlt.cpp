@@ -118,4 +118,36 @@ void SparseLdlt::solve_in_place(Eigen::VectorXd& x) const {
     }
 }
 
+void SparseLdlt::solve_in_place(Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    const int* li = row_.data();
+    const double* lx = value_.data();
+    for (int i = 0; i < n_; ++i) {
+        const double xi = x[i], yi = y[i];
+        const int begin = column_start_[static_cast<std::size_t>(i)], end = column_start_[static_cast<std::size_t>(i) + 1];
+        if (xi != 0.0 && yi != 0.0)
+            for (int p = begin; p < end; ++p) {
+                x[li[p]] -= xi * lx[p];
+                y[li[p]] -= yi * lx[p];
+            }
+        else if (xi != 0.0)
+            for (int p = begin; p < end; ++p) x[li[p]] -= xi * lx[p];
+        else if (yi != 0.0)
+            for (int p = begin; p < end; ++p) y[li[p]] -= yi * lx[p];
+    }
+    for (int i = 0; i < n_; ++i) {
+        const double inverse = 1.0 / d_[i];
+        x[i] = inverse * x[i];
+        y[i] = inverse * y[i];
+    }
+    for (int i = n_ - 1; i >= 0; --i) {
+        double xi = x[i], yi = y[i];
+        for (int p = column_start_[static_cast<std::size_t>(i)]; p < column_start_[static_cast<std::size_t>(i) + 1]; ++p) {
+            xi -= lx[p] * x[li[p]];
+            yi -= lx[p] * y[li[p]];
+        }
+        x[i] = xi;
+        y[i] = yi;
+    }
+}
+
 } // namespace plastica

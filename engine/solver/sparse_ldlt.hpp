@@ -23,6 +23,8 @@ public:
     bool factorize(const SparseMatrix& upper);
     // Solves L D Lᵀ x = b in place.
     void solve_in_place(Eigen::VectorXd& x) const;
+    // Two systems in one pass over L: the same operations on each as solve_in_place.
+    void solve_in_place(Eigen::VectorXd& x, Eigen::VectorXd& y) const;
     const Eigen::VectorXd& pivots() const { return d_; }
 
 private:
