@@ -36,6 +36,8 @@ public:
     virtual ~BasicLaw() = default;
     // Trial state for the basic deformations e; returns q and ∂q/∂e.
     virtual void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) = 0;
+    // ∂q/∂e at the last trial state (the element asks for it only when its tangent is needed).
+    virtual void trial_tangent(Eigen::Matrix3d& k) const = 0;
     virtual void commit() = 0;
     virtual void revert() = 0;
     virtual bool has_hinges() const { return false; }
@@ -65,17 +67,25 @@ Eigen::Matrix3d elastic_basic_stiffness(double EA, double EI, double L0);
 
 class ElasticLaw final : public BasicLaw {
 public:
-    ElasticLaw(double EA, double EI, double L0) : k_(elastic_basic_stiffness(EA, EI, L0)) {}
+    ElasticLaw(double EA, double EI, double L0) {
+        const Eigen::Matrix3d k = elastic_basic_stiffness(EA, EI, L0);
+        axial_ = k(0, 0), near_ = k(1, 1), far_ = k(1, 2);
+    }
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
-        k = k_;
-        q = k_ * e;
+        trial_tangent(k);
+        q = k * e;
+    }
+    void trial_tangent(Eigen::Matrix3d& k) const override {
+        k << axial_, 0.0, 0.0, 0.0, near_, far_, 0.0, far_, near_;
     }
     void commit() override {}
     void revert() override {}
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<ElasticLaw>(*this); }
 
 private:
-    Eigen::Matrix3d k_;
+    // The three distinct entries of the stiffness, kept instead of the matrix: a large model's
+    // memory is mostly its elements.
+    double axial_, near_, far_; // EA/L0, 4EI/L0, 2EI/L0
 };
 
 } // namespace plastica

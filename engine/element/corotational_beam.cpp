@@ -18,7 +18,7 @@ struct ChordVectors {
 } // namespace
 
 CorotationalBeam::CorotationalBeam(const Node& a, const Node& b, std::unique_ptr<BasicLaw> law)
-    : x0_(a.x), y0_(a.y), dx0_(b.x - a.x), dy0_(b.y - a.y), law_(std::move(law)) {
+    : dx0_(b.x - a.x), dy0_(b.y - a.y), law_(std::move(law)) {
     L0_ = std::hypot(dx0_, dy0_);
     c0_ = dx0_ / L0_;
     s0_ = dy0_ / L0_;
@@ -26,9 +26,9 @@ CorotationalBeam::CorotationalBeam(const Node& a, const Node& b, std::unique_ptr
 }
 
 CorotationalBeam::CorotationalBeam(const CorotationalBeam& o)
-    : x0_(o.x0_), y0_(o.y0_), dx0_(o.dx0_), dy0_(o.dy0_), L0_(o.L0_), c0_(o.c0_), s0_(o.s0_),
+    : dx0_(o.dx0_), dy0_(o.dy0_), L0_(o.L0_), c0_(o.c0_), s0_(o.s0_),
       law_(o.law_->clone()), alpha_committed_(o.alpha_committed_), alpha_trial_(o.alpha_trial_),
-      length_trial_(o.length_trial_), c_trial_(o.c_trial_), s_trial_(o.s_trial_), k_trial_(o.k_trial_),
+      length_trial_(o.length_trial_), c_trial_(o.c_trial_), s_trial_(o.s_trial_),
       q_trial_(o.q_trial_), q_committed_(o.q_committed_),
       length_committed_(o.length_committed_) {}
 
@@ -53,7 +53,8 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
     e[1] = d[2] - alpha;
     e[2] = d[5] - alpha;
 
-    law_->trial(e, q_trial_, k_trial_);
+    Eigen::Matrix3d k_basic; // kept by the law for tangent()
+    law_->trial(e, q_trial_, k_basic);
     alpha_trial_ = alpha;
     length_trial_ = L;
     c_trial_ = c;
@@ -83,10 +84,12 @@ void CorotationalBeam::tangent(Matrix6& k) const {
     }
     B[1][2] += 1.0;
     B[2][5] += 1.0;
+    Eigen::Matrix3d kb;
+    law_->trial_tangent(kb);
     double W[6][3]; // Bᵀ·k_b
     for (int m = 0; m < 3; ++m)
         for (int i = 0; i < 6; ++i)
-            W[i][m] = B[0][i] * k_trial_(0, m) + B[1][i] * k_trial_(1, m) + B[2][i] * k_trial_(2, m);
+            W[i][m] = B[0][i] * kb(0, m) + B[1][i] * kb(1, m) + B[2][i] * kb(2, m);
     const double axial = q_trial_[0] / L;
     const double shear = (q_trial_[1] + q_trial_[2]) / (L * L);
     for (int j = 0; j < 6; ++j)

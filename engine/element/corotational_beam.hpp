@@ -49,14 +49,13 @@ public:
     double rigid_rotation() const { return alpha_trial_; }
 
 private:
-    double x0_, y0_, dx0_, dy0_;
+    double dx0_, dy0_;
     double L0_, c0_, s0_;
     std::unique_ptr<BasicLaw> law_;
     double alpha_committed_ = 0.0;
     double alpha_trial_ = 0.0;
     double length_trial_ = 0.0;
-    double c_trial_ = 1.0, s_trial_ = 0.0;            // the trial chord's direction
-    Eigen::Matrix3d k_trial_ = Eigen::Matrix3d::Zero(); // the basic law's trial tangent
+    double c_trial_ = 1.0, s_trial_ = 0.0; // the trial chord's direction
     Eigen::Vector3d q_trial_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d q_committed_ = Eigen::Vector3d::Zero();
     double length_committed_ = 0.0;

@@ -11,7 +11,7 @@ DistributedPlasticityLaw::DistributedPlasticityLaw(const SectionSpec& section, d
         points_.push_back({p, prototype, (6.0 * p.xi - 4.0) / L0, (6.0 * p.xi - 2.0) / L0, {}, {}});
 }
 
-void DistributedPlasticityLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
+void DistributedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     q = k_regular_ * e;
     k = k_regular_;
     consistent_ = true;

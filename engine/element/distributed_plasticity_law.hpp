@@ -27,7 +27,11 @@ public:
     DistributedPlasticityLaw(const SectionSpec& section, double L0, int integration_points,
                              double regularisation = regularising_stiffness);
 
-    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
+    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
+        trial_response(e, q, k);
+        k_t_ = k;
+    }
+    void trial_tangent(Eigen::Matrix3d& k) const override { k = k_t_; }
     void commit() override;
     void revert() override;
     std::vector<SectionReport> sections() const override;
@@ -40,6 +44,8 @@ public:
     }
 
 private:
+    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k);
+    Eigen::Matrix3d k_t_ = Eigen::Matrix3d::Zero(); // the tangent of the last trial
     struct IntegrationPoint {
         QuadraturePoint at;
         FibreSection section;

@@ -108,7 +108,7 @@ void PlasticHingeLaw::set_without_flow(const Eigen::Vector3d& e, const Eigen::Ve
     q_t_ = q;
 }
 
-void PlasticHingeLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
+void PlasticHingeLaw::trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     if (e == e_c_ && !loading_c_.empty() && !unloading_predictor_) {
         // At the committed state the response is one-sided: give the tangent of continued
         // loading (the rows that carried the last step's flow), the predictor of the next step.

@@ -121,7 +121,7 @@ double SegmentedPlasticityLaw::inner_residual(const std::vector<Inner>& r) const
     return std::sqrt(sum);
 }
 
-void SegmentedPlasticityLaw::trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
+void SegmentedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     // Start from the last trial state moved along its condensed tangent: exact while every
     // section stays on its branch, so an elastic element needs one evaluation.
     std::vector<Inner>& inner = inner_t_;
