@@ -249,7 +249,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
         // An arc-length step past the stage's target is taken again from where it started, under
         // the control that lands on the target exactly (a step that fails to land is cut).
-        if (outcome.converged() && a.scheme == Scheme::arc_length && past_target() > 1e-9 * std::abs(a.initial_increment)) {
+        if (outcome.converged() && a.scheme == Scheme::arc_length && past_target() > target_slack()) {
             summary.iterations += outcome.iterations;
             u_ = u_saved;
             lambda_ = lambda_saved;
@@ -379,8 +379,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
 }
 
 bool PathFollowing::target_reached() const {
-    // A target counts as reached within round-off of the increment that led to it.
-    return past_target() >= -1e-9 * std::abs(analysis_.initial_increment);
+    return past_target() >= -target_slack();
 }
 
 double PathFollowing::past_target() const {

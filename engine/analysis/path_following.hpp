@@ -13,6 +13,7 @@
 #include "solver/newton_solver.hpp"
 
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -62,7 +63,6 @@ public:
 private:
     RunSummary run_steps(const std::vector<StepObserver>& observers, const RunControl& control, RunSummary& summary);
     // extrapolate: start from the path's quadratic extrapolation when there is one.
-    int failures_in_step_ = 0; // attempts of the coming step that failed
     NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate);
     // One increment under the given scheme instead of the stage's (an arc-length step's landing).
     NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, Scheme scheme);
@@ -85,6 +85,8 @@ private:
     // How far the current state lies past the stage's target, toward it positive (in load
     // factor or controlled displacement); −∞ without a target.
     double past_target() const;
+    // Round-off of the increment that led to the target: nearer than this counts as on it.
+    double target_slack() const { return 1e-9 * std::abs(analysis_.initial_increment); }
     // Makes stages[k] of the model the current stage; returns its first increment, signed
     // toward its target.
     double begin_stage(std::size_t k);
@@ -100,6 +102,7 @@ private:
     Eigen::VectorXd previous_increment_; // free DOFs, last converged Δu
     double lambda_ = 0.0;
     double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference
+    int failures_in_step_ = 0; // attempts of the coming step that failed
     int steps_since_cut_ = 0;  // converged steps at the increment a cut left (fixed increments)
     double arc_length_ = 0.0;
     double last_residual_ = 0.0;
