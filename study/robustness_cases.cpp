@@ -128,12 +128,12 @@ std::vector<StabilityCase> robustness_cases() {
     // (the half ring cannot; the two differ by up to 7 %). Fixed increments, as shipped.
     cases.push_back({name, "whole, fy × 1/10",
                      edited(embedded_scene("gallery/ring_full"), {{"fy = 36518.0", "fy = 3651.8"}}), done, nullptr});
-    // The whole ring √3 times thicker at the same area (I × 3): it passes its sway near δ = 88
-    // with adaptive increments (fixed ones stop there: README).
-    cases.push_back({name, "whole, I × 3, adaptive",
+    // The whole ring √3 times thicker at the same area (I × 3), in the scene's fixed increments:
+    // it passes its sway near δ = 88. Its round-off floor is 0.7 of the tolerance there, so some
+    // other increments stop (README, Known limits).
+    cases.push_back({name, "whole, I × 3",
                      edited(embedded_scene("gallery/ring_full"), {{"b = 9.128709291752768", "b = 5.2704627669473"},
-                                                                 {"h = 0.010954451150103323", "h = 0.018973665961010275"},
-                                                                 {"adaptive = false", "adaptive = true"}}),
+                                                                 {"h = 0.010954451150103323", "h = 0.018973665961010275"}}),
                      done, nullptr});
     // Ten times thicker (I × 100, same A): past its peak near δ = 12 the hinges form a softening
     // mechanism; fixed steps of 0.5 need about 700 steps (half of them cut), adaptive ones 350.

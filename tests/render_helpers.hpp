@@ -34,6 +34,14 @@ inline fs::path solved_series_of(Model model, int every, const std::string& tag)
     return folder;
 }
 
+// The last of the frames drawn into `pictures` (frames are numbered by step).
+inline fs::path last_frame(const fs::path& pictures) {
+    fs::path last;
+    for (const fs::directory_entry& f : fs::directory_iterator(pictures / "frames"))
+        if (f.path().extension() == ".png" && f.path().filename() > last.filename()) last = f.path();
+    return last;
+}
+
 struct Pixel {
     int r, g, b;
 };

@@ -37,7 +37,7 @@ std::vector<double> section_capacities(const Model& model) {
 } // namespace
 
 std::vector<HingeEnds> allocate_hinge_capacity(const Model& model) {
-    std::vector<HingeEnds> served(model.elements.size(), {1, 1});
+    std::vector<HingeEnds> served(model.elements.size());
     // The ends of hinge elements at each node, as (element, end).
     std::vector<std::vector<std::array<int, 2>>> ends(model.nodes.size());
     std::vector<int> members(model.nodes.size(), 0);
@@ -57,7 +57,15 @@ std::vector<HingeEnds> allocate_hinge_capacity(const Model& model) {
         };
         // Equal sections: the first end, as listed.
         const std::array<int, 2>& weaker = strength(ends[n][1]) < strength(ends[n][0]) ? ends[n][1] : ends[n][0];
-        for (const std::array<int, 2>& end : ends[n]) served[end[0]][end[1]] = &end == &weaker ? 2 : 0;
+        // Equal sections yield alike, so their pseudo-springs go soft together: one spring
+        // stands for both, or the node's rotation between two nearly free springs would make
+        // the tangent nearly singular. A stronger section's end keeps its own (stiffer) spring.
+        const bool equal = strength(ends[n][0]) == strength(ends[n][1]);
+        for (const std::array<int, 2>& end : ends[n]) {
+            const bool serves = &end == &weaker;
+            served[end[0]].capacity[end[1]] = serves ? 2 : 0;
+            served[end[0]].spring[end[1]] = equal ? (serves ? 2 : 0) : 1;
+        }
     }
     return served;
 }

@@ -19,7 +19,7 @@ namespace {
 // tolerance stops the run: no smaller increment lowers that floor.
 constexpr double hopeless_floor = 1e3;
 // How far into its yielding range (in |M|/M_p) one adaptive increment may carry a hinge section.
-constexpr double max_yield_advance = 0.1;
+constexpr double max_yield_advance = 0.05;
 
 Eigen::VectorXd nodal_loads(const Model& model) {
     Eigen::VectorXd force = Eigen::VectorXd::Zero(model.dof_count());

@@ -19,7 +19,7 @@ PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnd
       sections_{FibreSection(section), FibreSection(section)},
       k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)), f_elastic_(k_elastic_.inverse()),
       moment_scale_(sections_[0].moment_capacity(0.0, 1.0)),
-      capacity_at_{ends_served[0] > 0, ends_served[1] > 0}, ends_served_(ends_served) {
+      capacity_at_{ends_served.capacity[0] > 0, ends_served.capacity[1] > 0}, ends_served_(ends_served) {
     rows_.assign(row_count, YieldRow{});
     for (YieldRow& r : rows_) r.limit = no_limit;
     const FibreSection& s = sections_[0];
@@ -47,7 +47,8 @@ void PlasticHingeLaw::set_loading_surfaces() {
         row.limit = row.a.dot(q_c_);
         const double eta = std::max(eta_c_[end], eta_floor);
         const double S = 6.0 * EI_ / L0_ * eta / (1.0 - eta);
-        row.hardening = S / (moment_scale_ * moment_scale_);
+        // Two equal ends' springs in series where this one stands for both: half as stiff.
+        row.hardening = S / ends_served_.spring[end] / (moment_scale_ * moment_scale_);
     }
 }
 
@@ -68,7 +69,7 @@ void PlasticHingeLaw::linearise_capacity(double N) {
         row.a[0] = -v.slope / moment_scale_;
         row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
         row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[r];
-        row.hardening = regularising_hardening / ends_served_[end] * row.a.dot(k_elastic_ * row.a);
+        row.hardening = regularising_hardening / ends_served_.capacity[end] * row.a.dot(k_elastic_ * row.a);
     }
 }
 
@@ -208,7 +209,8 @@ void PlasticHingeLaw::commit() {
             report.ei_ratio = std::clamp(scm.ei_tangent / section.elastic_ei(), 0.0, 1.0);
             report.ea_ratio = std::clamp(scm.ea_tangent / section.elastic_ea(), 0.0, 1.0);
             report.state = report.ei_ratio < 1.0 - 1e-12 ? HingeState::yielding : HingeState::elastic;
-            eta_c_[end] = report.ei_ratio;
+            // An end whose spring the other end at the node stands for has none of its own.
+            eta_c_[end] = ends_served_.spring[end] > 0 ? report.ei_ratio : 1.0;
         } else if (!at_capacity && scm.outcome == ScmOutcome::no_convergence) {
             // The section solve failed: keep the previous stiffness and say so.
             section.revert();

@@ -34,12 +34,12 @@ class PlasticHingeLaw final : public BasicLaw {
 public:
     static constexpr double regularising_hardening = 1e-6;
 
-    // ends_served: for each end, how many element ends its capacity rows serve
-    // (analysis/hinge_allocation.hpp): 0, none (it keeps its pseudo-spring only); 1, its own;
-    // 2, its own and the other element's at the node, where nothing else takes moment. A row
-    // serving two ends has half the regularising hardening: the node's hinge then hardens
-    // like the two ends' hinges in series, as it does where each end has its own.
-    PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnds ends_served = {1, 1});
+    // ends_served: for each end, how many element ends its capacity rows and its pseudo-spring
+    // stand for (analysis/hinge_allocation.hpp): 0, none; 1, its own; 2, its own and the other
+    // element's at the node, where nothing else takes moment. A row serving two ends has half
+    // the hardening (regularising, or the spring's): the node's hinge then hardens like the
+    // two ends' hinges in series, as it does where each end has its own.
+    PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnds ends_served = {});
 
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
         trial_response(e, q, k);
