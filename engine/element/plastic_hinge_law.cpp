@@ -124,7 +124,12 @@ void PlasticHingeLaw::trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& 
         set_without_flow(e, q_trial, k_elastic_, q, k);
         return;
     }
-    for (Row r : {tension, compression}) rows_[r].limit = 1.0 + hardened_[r];
+    // The squash loads bound N only in an element without capacity rows: the capacity curve
+    // itself meets M = 0 at them, so a third row through that vertex would be a multiple of the
+    // other two there, its multipliers split by the regularising hardening alone (a whole
+    // member at the squash load then swaps between splits from one iteration to the next).
+    const bool axial_rows = !capacity_at_[0] && !capacity_at_[1];
+    for (Row r : {tension, compression}) rows_[r].limit = axial_rows ? 1.0 + hardened_[r] : no_limit;
     // Linearise the capacity at the trial state, return, and repeat at the returned N.
     // The returned N is a function G of the N the surface is linearised at; the state on the
     // curved surface is its fixed point. Plain repetition N ← G(N) has the factor

@@ -83,7 +83,8 @@ private:
     Eigen::Matrix3d f_elastic_; // its inverse, the elastic flexibility
     double moment_scale_;          // plastic moment at N = 0
     // Rows: 0, 1 pseudo-springs of ends i, j; 2, 3 their capacity in positive bending, 4, 5
-    // in negative bending; 6, 7 tension and compression squash loads.
+    // in negative bending; 6, 7 tension and compression squash loads (in an element without
+    // capacity rows only).
     enum Row { spring_i = 0, spring_j = 1, capacity_i = 2, capacity_j = 3, negative_i = 4, negative_j = 5,
                tension = 6, compression = 7, row_count = 8 };
     static bool capacity_row(int r) { return r >= capacity_i && r <= negative_j; }
