@@ -1,5 +1,6 @@
 #include "charts.hpp"
 #include "figure_text.hpp"
+#include "legend_corner.hpp"
 #include "offscreen_window.hpp"
 #include "palette.hpp"
 
@@ -70,6 +71,18 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
     }
     chart.set_ranges(x0, x1, y0, y1);
     chart.show_legend(f.legend);
+    if (f.legend) {
+        // The legend's size against the plot's, from its longest label and its entries (VTK
+        // sets 13-point labels with a marker beside them; the plot fills most of the chart).
+        std::size_t entries = 0, longest = 0;
+        for (const ChartSeries& series : f.series)
+            if (!series.label.empty()) ++entries, longest = std::max(longest, series.label.size());
+        const double plot_width = 0.85 * f.width, plot_height = 0.8 * (1.0 - band) * f.height;
+        const double box_width = std::min(0.6, (7.5 * static_cast<double>(longest) + 50.0) * s / plot_width);
+        const double box_height = std::min(0.6, (19.0 * static_cast<double>(entries) + 12.0) * s / plot_height);
+        const LegendCorner corner = clearest_corner(f.series, x0, x1, y0, y1, box_width, box_height, f.log_scale);
+        chart.set_legend_corner(corner.right, corner.bottom);
+    }
     chart.place_in(chart_area);
     window.add(band_area);
     window.add(chart_area);

@@ -122,6 +122,12 @@ void LoadChart::set_ranges(double x0, double x1, double y0, double y1) {
 
 void LoadChart::show_legend(bool show) { chart_->SetShowLegend(show); }
 
+void LoadChart::set_legend_corner(bool right, bool bottom) {
+    vtkChartLegend* legend = chart_->GetLegend();
+    legend->SetHorizontalAlignment(right ? vtkChartLegend::RIGHT : vtkChartLegend::LEFT);
+    legend->SetVerticalAlignment(bottom ? vtkChartLegend::BOTTOM : vtkChartLegend::TOP);
+}
+
 void LoadChart::set_log_scale() {
     chart_->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true);
     chart_->GetAxis(vtkAxis::LEFT)->SetLogScale(true);

@@ -37,6 +37,7 @@ public:
     void replace(int index, const std::vector<double>& x, const std::vector<double>& y);
     void set_ranges(double x0, double x1, double y0, double y1);
     void show_legend(bool show);
+    void set_legend_corner(bool right, bool bottom);      // inside the plot; top left unless set
     void set_log_scale();                                 // both axes
     void place_in(vtkRenderer* renderer);                 // the chart fills the renderer's viewport
 

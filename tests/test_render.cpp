@@ -2,6 +2,8 @@
 // the pixels of the PNGs: sizes, layers present or left out, and a chart that follows the data.
 #include "render_helpers.hpp"
 
+#include "charts.hpp"
+#include "legend_corner.hpp"
 #include "palette.hpp"
 #include "png_file.hpp"
 #include "render_error.hpp"
@@ -421,4 +423,36 @@ TEST_CASE("Greek letters in labels are drawn, not dropped", "[render]") {
     CAPTURE(plain, greek, latin);
     // Nine Greek letters add ink about as much as nine Latin ones.
     CHECK(greek - plain > 0.7 * (latin - plain));
+}
+
+TEST_CASE("The legend goes to the corner the curves leave free", "[render]") {
+    // A frame's curve: up at once to its peak, then falling away to the right.
+    ChartSeries falling{"a curve", {0.0, 0.02, 0.05, 0.25}, {0.0, 1.05, 0.95, 0.6}, {31, 119, 180}};
+    const auto corner = [](const std::vector<ChartSeries>& s) { return clearest_corner(s, 0.0, 0.26, 0.0, 1.1, 0.3, 0.15); };
+    CHECK(corner({falling}).right);
+    CHECK(!corner({falling}).bottom);
+    // Rising to the top right, the curve leaves the top left free: it keeps the legend.
+    ChartSeries rising{"a curve", {0.0, 0.25}, {0.0, 1.05}, {31, 119, 180}};
+    CHECK(!corner({rising}).right);
+    CHECK(!corner({rising}).bottom);
+    // A plateau across the top: a bottom corner, the right one first.
+    ChartSeries plateau{"a curve", {0.0, 0.01, 0.25}, {0.0, 1.05, 1.05}, {31, 119, 180}};
+    CHECK(corner({plateau}).bottom);
+    CHECK(corner({plateau}).right);
+
+    // Drawn: the legend's dark text and frame in the top right, none in the top left, where the
+    // curve peaks (the vertical axis' labels lie left of both boxes).
+    unsetenv("DISPLAY");
+    ChartFigure f;
+    f.title = "legend placement";
+    f.x_label = "x";
+    f.y_label = "y";
+    f.series = {falling};
+    f.legend = true;
+    f.width = 640;
+    f.height = 360;
+    vtkSmartPointer<vtkImageData> chart = draw_chart(f);
+    const auto dark = [](Pixel p) { return p.r < 60 && p.g < 60 && p.b < 60; };
+    CHECK(count_pixels(chart, dark, 0.6, 0.98, band_bottom + 0.01, 0.4) > 50);
+    CHECK(count_pixels(chart, dark, 0.15, 0.45, band_bottom + 0.01, 0.4) == 0);
 }
