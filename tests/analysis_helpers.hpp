@@ -33,6 +33,8 @@ struct Run {
 };
 
 inline Run run_scene(const std::string& toml);
+// Runs a model already read (a scene file with overrides, say) to its end.
+inline Run run_model(Model model);
 
 // The text of a scene file of the source tree, by its path relative to the tree.
 inline std::string scene_file_text(const std::string& relative) {
@@ -44,9 +46,11 @@ inline std::string scene_file_text(const std::string& relative) {
 
 inline Run run_scene_file(const std::string& relative) { return run_scene(scene_file_text(relative)); }
 
-inline Run run_scene(const std::string& toml) {
+inline Run run_scene(const std::string& toml) { return run_model(read_scene_text(toml, "test.toml")); }
+
+inline Run run_model(Model model) {
     Run r;
-    r.model = read_scene_text(toml, "test.toml");
+    r.model = std::move(model);
     PathFollowing analysis(r.model);
     r.summary = analysis.run({[&](const StepResult& s) { r.steps.push_back(s); }});
     r.trace = analysis.trace();

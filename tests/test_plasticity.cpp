@@ -97,10 +97,7 @@ TEST_CASE("Load, yield, unload: the residual rotation is the plastic rotation, u
 }
 
 TEST_CASE("The inelastic ring reaches a top displacement of 100 with every step converged", "[plasticity][ring]") {
-    Run r;
-    r.model = read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/ring_inelastic.toml");
-    PathFollowing analysis(r.model);
-    r.summary = analysis.run({[&](const StepResult& s) { r.steps.push_back(s); }});
+    const Run r = run_model(read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/ring_inelastic.toml"));
     REQUIRE(r.summary.status == RunStatus::completed);
     CHECK(r.summary.cut_steps == 0);
     CHECK(r.steps.back().control_displacement >= 100.0);
@@ -136,13 +133,7 @@ TEST_CASE("Adaptive increments bound the pseudo-springs' step error: the portal 
     // fixed increments ten times finer (measured 0.19 % and 0.25 %; 0.65 % and 0.39 % without the
     // bound, 0.33 % and 0.32 % with a bound of 0.1).
     const std::string scene = std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/portal_frame.toml";
-    auto run = [&](const std::vector<Override>& overrides) {
-        Run r;
-        r.model = read_scene(scene, overrides);
-        PathFollowing analysis(r.model);
-        r.summary = analysis.run({[&](const StepResult& s) { r.steps.push_back(s); }});
-        return r;
-    };
+    auto run = [&](const std::vector<Override>& overrides) { return run_model(read_scene(scene, overrides)); };
     const Run fine = run({{"analysis.adaptive", "false"}, {"analysis.increment", "0.0002"}, {"analysis.max_steps", "3000"}});
     REQUIRE(fine.summary.status == RunStatus::completed);
     const double peak = fine.max_load();
@@ -205,11 +196,7 @@ TEST_CASE("The portal frame sways to its target on one to four elements per memb
     const std::string scene = std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/portal_frame.toml";
     auto run = [&](int elements) {
         const std::string n = std::to_string(elements);
-        Run r;
-        r.model = read_scene(scene, {{"line[left column].elements", n}, {"line[beam].elements", n}, {"line[right column].elements", n}});
-        PathFollowing analysis(r.model);
-        r.summary = analysis.run({[&](const StepResult& s) { r.steps.push_back(s); }});
-        return r;
+        return run_model(read_scene(scene, {{"line[left column].elements", n}, {"line[beam].elements", n}, {"line[right column].elements", n}}));
     };
     const double peak = run(8).max_load();
     for (int elements : {1, 2, 3, 4}) {

@@ -62,6 +62,23 @@ public:
     virtual std::unique_ptr<BasicLaw> clone() const = 0;
 };
 
+// A law whose tangent comes out of its trial response (a return map, section solves): it keeps
+// that tangent for trial_tangent().
+class TrialTangentLaw : public BasicLaw {
+public:
+    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) final {
+        trial_response(e, q, k);
+        k_t_ = k;
+    }
+    void trial_tangent(Eigen::Matrix3d& k) const final { k = k_t_; }
+
+protected:
+    virtual void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) = 0;
+
+private:
+    Eigen::Matrix3d k_t_ = Eigen::Matrix3d::Zero(); // the tangent of the last trial
+};
+
 // Elastic Euler–Bernoulli beam: N = EA u_l / L0, M_i = EI/L0 (4θ_i + 2θ_j), M_j = EI/L0 (2θ_i + 4θ_j).
 Eigen::Matrix3d elastic_basic_stiffness(double EA, double EI, double L0);
 

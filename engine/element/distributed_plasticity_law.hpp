@@ -19,7 +19,7 @@
 
 namespace plastica {
 
-class DistributedPlasticityLaw final : public BasicLaw {
+class DistributedPlasticityLaw final : public TrialTangentLaw {
 public:
     static constexpr double regularising_stiffness = 1e-9;
 
@@ -27,11 +27,6 @@ public:
     DistributedPlasticityLaw(const SectionSpec& section, double L0, int integration_points,
                              double regularisation = regularising_stiffness);
 
-    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
-        trial_response(e, q, k);
-        k_t_ = k;
-    }
-    void trial_tangent(Eigen::Matrix3d& k) const override { k = k_t_; }
     void commit() override;
     void revert() override;
     std::vector<SectionReport> sections() const override;
@@ -44,8 +39,7 @@ public:
     }
 
 private:
-    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k);
-    Eigen::Matrix3d k_t_ = Eigen::Matrix3d::Zero(); // the tangent of the last trial
+    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     struct IntegrationPoint {
         QuadraturePoint at;
         FibreSection section;

@@ -30,7 +30,7 @@
 
 namespace plastica {
 
-class PlasticHingeLaw final : public BasicLaw {
+class PlasticHingeLaw final : public TrialTangentLaw {
 public:
     static constexpr double regularising_hardening = 1e-6;
 
@@ -41,11 +41,6 @@ public:
     // two ends' hinges in series, as it does where each end has its own.
     PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnds ends_served = {});
 
-    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
-        trial_response(e, q, k);
-        k_t_ = k;
-    }
-    void trial_tangent(Eigen::Matrix3d& k) const override { k = k_t_; }
     void commit() override;
     void revert() override;
     bool has_hinges() const override { return true; }
@@ -60,8 +55,7 @@ public:
     }
 
 private:
-    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k);
-    Eigen::Matrix3d k_t_ = Eigen::Matrix3d::Zero(); // the tangent of the last trial
+    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     // Section moment at an end from the basic end moments: the sagging moment EI·dθ/ds is
     // −M_i at the first end and +M_j at the second.
     static double section_moment(const Eigen::Vector3d& q, int end) {

@@ -34,15 +34,10 @@
 
 namespace plastica {
 
-class SegmentedPlasticityLaw final : public BasicLaw {
+class SegmentedPlasticityLaw final : public TrialTangentLaw {
 public:
     SegmentedPlasticityLaw(const SectionSpec& section, double L0, int segments, int integration_points, double grading);
 
-    void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
-        trial_response(e, q, k);
-        k_t_ = k;
-    }
-    void trial_tangent(Eigen::Matrix3d& k) const override { k = k_t_; }
     void commit() override;
     void revert() override;
     std::vector<SectionReport> sections() const override;
@@ -54,8 +49,7 @@ public:
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<SegmentedPlasticityLaw>(*this); }
 
 private:
-    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k);
-    Eigen::Matrix3d k_t_ = Eigen::Matrix3d::Zero(); // the tangent of the last trial
+    void trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override;
     using Inner = Eigen::Vector2d;                  // (w, θ) of an inner node
     using Coupling = Eigen::Matrix<double, 2, 3>;   // an inner node against [u_l, θ_i, θ_j]
     using InnerMap = Eigen::Matrix<double, 3, 2>;   // a segment's deformations per inner node motion
