@@ -124,7 +124,11 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     case Scheme::arc_length: {
         // After three cuts of this step a root-less corrector takes the line's point nearest
         // the arc instead of cutting on (before, a cut is what settles most such corrections).
-        ArcLength c(h, previous_increment_, failures_in_step_ >= 3);
+        // So does every step after three in a row that were cut for it: approaching a corner
+        // of the path, each step misses at its first try and lands at half of it, the next
+        // regrows and misses again, and the increments shrink geometrically: their sum never
+        // reaches the corner.
+        ArcLength c(h, previous_increment_, failures_in_step_ >= 3 || steps_missing_arc_ >= 3);
         result = solve_increment(problem, c, settings, solver_, hook, start);
         break;
     }
@@ -267,6 +271,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             // element cantilever cut its first step twenty times for 16 s before saying so). A
             // single failure says little: its last iterate may be far off, and so its floor.
             ++failures_in_step_;
+            if (outcome.failure == NewtonFailure::no_constraint_root) missed_arc_in_step_ = true;
             const RoundOffFloor floor_at_failure =
                 outcome.failure != NewtonFailure::non_finite ? round_off_floor() : RoundOffFloor{};
             const bool hopeless = failures_in_step_ > 3 && floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
@@ -337,6 +342,8 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
         system_.commit();
         failures_in_step_ = 0;
+        steps_missing_arc_ = missed_arc_in_step_ ? steps_missing_arc_ + 1 : 0;
+        missed_arc_in_step_ = false;
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
         arc_length_ += previous_increment_.norm();

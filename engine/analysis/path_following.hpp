@@ -103,6 +103,10 @@ private:
     double lambda_ = 0.0;
     double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference
     int failures_in_step_ = 0; // attempts of the coming step that failed
+    // An arc-length corrector's line missed the arc in this step (it was cut for that), and
+    // the count of steps in a row before it that were cut for that.
+    bool missed_arc_in_step_ = false;
+    int steps_missing_arc_ = 0;
     int steps_since_cut_ = 0;  // converged steps at the increment a cut left (fixed increments)
     double arc_length_ = 0.0;
     double last_residual_ = 0.0;

@@ -70,35 +70,36 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
 }
 
 void CorotationalBeam::tangent(Matrix6& k) const {
-    // Bᵀ·k_b·B + z zᵀ N/L + (r zᵀ + z rᵀ)(M_i + M_j)/L², entry by entry with the sums in the
-    // order Eigen's fixed-size products take (the same bits), without their temporaries:
-    // a third of the instructions.
+    // Bᵀ·k_b·B + z zᵀ N/L + (r zᵀ + z rᵀ)(M_i + M_j)/L², with the rows of B being r, b + e₃ and
+    // b + e₆ (b = −z/L). r and z vanish at the rotations and change sign from the first node to
+    // the second, so every column of K is r_j·α + z_j·β plus, at the rotations, a column of
+    // Bᵀ·k_b: two coefficients per row and four columns that are ± two others.
     const double L = length_trial_;
     const ChordVectors chord(c_trial_, s_trial_);
     const double* r = chord.r;
     const double* z = chord.z;
-    double B[3][6];
-    for (int i = 0; i < 6; ++i) {
-        B[0][i] = r[i];
-        B[1][i] = B[2][i] = -z[i] / L;
-    }
-    B[1][2] += 1.0;
-    B[2][5] += 1.0;
     Eigen::Matrix3d kb;
     law_->trial_tangent(kb);
-    double W[6][3]; // Bᵀ·k_b
-    for (int m = 0; m < 3; ++m)
-        for (int i = 0; i < 6; ++i)
-            W[i][m] = B[0][i] * kb(0, m) + B[1][i] * kb(1, m) + B[2][i] * kb(2, m);
     const double axial = q_trial_[0] / L;
     const double shear = (q_trial_[1] + q_trial_[2]) / (L * L);
-    for (int j = 0; j < 6; ++j)
-        for (int i = 0; i < 6; ++i) {
-            double kij = W[i][0] * B[0][j] + W[i][1] * B[1][j] + W[i][2] * B[2][j];
-            kij += z[j] * (axial * z[i]);
-            kij += shear * (r[i] * z[j] + z[i] * r[j]);
-            k(i, j) = kij;
+    for (int i = 0; i < 6; ++i) {
+        double w[3]; // row i of Bᵀ·k_b
+        if (i == 2 || i == 5) {
+            const int a = i == 2 ? 1 : 2;
+            w[0] = kb(a, 0), w[1] = kb(a, 1), w[2] = kb(a, 2);
+        } else {
+            const double b = -z[i] / L;
+            for (int m = 0; m < 3; ++m) w[m] = r[i] * kb(0, m) + b * (kb(1, m) + kb(2, m));
         }
+        const double alpha = w[0] + shear * z[i];
+        const double beta = axial * z[i] + shear * r[i] - (w[1] + w[2]) / L;
+        k(i, 0) = alpha * r[0] + beta * z[0];
+        k(i, 1) = alpha * r[1] + beta * z[1];
+        k(i, 2) = w[1];
+        k(i, 3) = -k(i, 0);
+        k(i, 4) = -k(i, 1);
+        k(i, 5) = w[2];
+    }
 }
 
 void CorotationalBeam::commit() {

@@ -134,7 +134,9 @@ ScmResult FibreSection::solve_for_forces(double N, double M, int max_iterations)
     }
     if (result.outcome != ScmOutcome::converged && f.lpNorm<Eigen::Infinity>() < 1e-11)
         result.outcome = ScmOutcome::converged;
-    set_trial_deformation(x[0], x[1]);
+    // The fibres nearly always hold the trial at x already (the last deformation set was the
+    // accepted one); not after a line search that found no descent.
+    if (eps0_t_ != x[0] || phi_t_ != x[1]) set_trial_deformation(x[0], x[1]);
     result.eps0 = x[0];
     result.curvature = x[1];
     result.response = r;
