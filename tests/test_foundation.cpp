@@ -273,3 +273,44 @@ TEST_CASE("A ring between two plates, the upper one moving, is the headline ring
     CHECK(plates.steps.back().load_factor == Approx(120.0));
     CHECK(plates.steps.back().contact_count >= 4); // two nodes on each plate
 }
+
+TEST_CASE("A contact whose force would stay within the undecided band keeps its state, beyond it the gap decides", "[foundation][contact]") {
+    Model model;
+    model.nodes.push_back({0.0, 0.0});
+    model.bases.push_back(BaseLine{});
+    FoundationSpring spring;
+    spring.ky = 1e6;
+    spring.unilateral = true;
+    model.springs.push_back(spring);
+    Foundation foundation(model);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(3);
+    u[1] = -1e-6; // pressed in: closed
+    foundation.evaluate(u, 0.0, false);
+    REQUIRE(foundation.states()[0].active);
+    // Lifted by 1e-8: a force of 0.01 if it stayed closed. Strictly the gap decides: it opens.
+    u[1] = 1e-8;
+    foundation.evaluate(u, 0.0, false);
+    CHECK_FALSE(foundation.states()[0].active);
+    CHECK(foundation.active_set_changed());
+    // Closed again, then lifted by the same 1e-8 with a band of 0.02: it stays closed, and that
+    // is consistent (open or closed, the residual differs by less than the band).
+    u[1] = -1e-6;
+    foundation.evaluate(u, 0.0, false);
+    foundation.set_undecided_force(0.02);
+    u[1] = 1e-8;
+    foundation.evaluate(u, 0.0, false);
+    CHECK(foundation.states()[0].active);
+    CHECK_FALSE(foundation.active_set_changed());
+    CHECK(foundation.active_set_consistent());
+    // Lifted by 1e-7 (a force of 0.1): beyond the band, it opens.
+    u[1] = 1e-7;
+    foundation.evaluate(u, 0.0, false);
+    CHECK_FALSE(foundation.states()[0].active);
+    // Frozen closed at that gap: inconsistent.
+    u[1] = -1e-6;
+    foundation.evaluate(u, 0.0, false);
+    u[1] = 1e-7;
+    foundation.evaluate(u, 0.0, true);
+    CHECK(foundation.states()[0].active);
+    CHECK_FALSE(foundation.active_set_consistent());
+}

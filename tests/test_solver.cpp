@@ -2,8 +2,12 @@
 // stops with the last converged state kept.
 #include "analysis_helpers.hpp"
 
+#include "solver/bandwidth_order.hpp"
+#include "solver/block_profile_ldlt.hpp"
+#include "solver/linear_solver.hpp"
 #include "solver/sparse_ldlt.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <catch2/catch.hpp>
 #include <random>
@@ -204,4 +208,139 @@ TEST_CASE("The replayed sparse LDLᵀ gives Eigen's SimplicialLDLT to the last b
     replay.analyse(singular);
     CHECK_FALSE(replay.factorize(singular));
     CHECK(replay.pivots()[1] == 0.0);
+}
+
+namespace {
+// A symmetric matrix of nodes with 1 to 3 DOFs each (a fixed DOF leaves fewer), coupled along
+// a chain, or as a grid of `width` nodes per row, with random values: each pair of coupled
+// nodes gets a full block, as members give. Definite with a dominant diagonal, else indefinite.
+SparseMatrix node_matrix(int nodes, int width, bool definite, std::mt19937& random) {
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    std::vector<int> first(static_cast<std::size_t>(nodes) + 1, 0);
+    for (int a = 0; a < nodes; ++a) first[static_cast<std::size_t>(a) + 1] = first[static_cast<std::size_t>(a)] + 1 + static_cast<int>(random() % 3);
+    const int n = first.back();
+    std::vector<Eigen::Triplet<double>> entries;
+    auto couple = [&](int a, int b) {
+        for (int i = first[static_cast<std::size_t>(a)]; i < first[static_cast<std::size_t>(a) + 1]; ++i)
+            for (int j = first[static_cast<std::size_t>(b)]; j < first[static_cast<std::size_t>(b) + 1]; ++j) {
+                if (a == b && j < i) continue;
+                const double v = a == b && i == j ? (definite ? 20.0 + value(random) : 4.0 * value(random)) : value(random);
+                entries.emplace_back(i, j, v);
+                if (i != j) entries.emplace_back(j, i, v);
+            }
+    };
+    for (int a = 0; a < nodes; ++a) {
+        couple(a, a);
+        if (a + 1 < nodes && (width == 0 || (a + 1) % width != 0)) couple(a, a + 1);
+        if (width > 0 && a + width < nodes) couple(a, a + width);
+    }
+    SparseMatrix K(n, n);
+    K.setFromTriplets(entries.begin(), entries.end());
+    K.makeCompressed();
+    return K;
+}
+
+int negative_eigenvalues(const SparseMatrix& K) {
+    const Eigen::MatrixXd dense(K);
+    const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense).eigenvalues();
+    return static_cast<int>((eigenvalues.array() < 0.0).count());
+}
+} // namespace
+
+TEST_CASE("Reverse Cuthill-McKee puts a shuffled chain back in a line and a grid in a band", "[solver][order]") {
+    std::mt19937 random(3);
+    const int n = 60;
+    std::vector<int> label(n);
+    for (int i = 0; i < n; ++i) label[static_cast<std::size_t>(i)] = i;
+    std::shuffle(label.begin(), label.end(), random);
+    auto bandwidth = [](const SparseMatrix& K, const std::vector<int>& order) {
+        std::vector<int> position(order.size());
+        for (std::size_t p = 0; p < order.size(); ++p) position[static_cast<std::size_t>(order[p])] = static_cast<int>(p);
+        int width = 0;
+        for (int col = 0; col < K.outerSize(); ++col)
+            for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+                width = std::max(width, std::abs(position[static_cast<std::size_t>(it.row())] - position[static_cast<std::size_t>(col)]));
+        return width;
+    };
+    std::vector<Eigen::Triplet<double>> chain;
+    for (int i = 0; i < n; ++i) {
+        chain.emplace_back(label[static_cast<std::size_t>(i)], label[static_cast<std::size_t>(i)], 1.0);
+        if (i + 1 < n) {
+            chain.emplace_back(label[static_cast<std::size_t>(i)], label[static_cast<std::size_t>(i) + 1], 1.0);
+            chain.emplace_back(label[static_cast<std::size_t>(i) + 1], label[static_cast<std::size_t>(i)], 1.0);
+        }
+    }
+    SparseMatrix K(n, n);
+    K.setFromTriplets(chain.begin(), chain.end());
+    const std::vector<int> order = reverse_cuthill_mckee(K);
+    CHECK(bandwidth(K, order) == 1);
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (int i = 0; i < n; ++i) CHECK(sorted[static_cast<std::size_t>(i)] == i); // a permutation
+    // A 6 × 10 grid of single equations: the band of a row of the grid's short side.
+    std::vector<Eigen::Triplet<double>> grid;
+    for (int i = 0; i < n; ++i) {
+        const int a = label[static_cast<std::size_t>(i)];
+        grid.emplace_back(a, a, 1.0);
+        for (int j : {i + 1, i + 6})
+            if (j < n && (j != i + 1 || j % 6 != 0)) {
+                grid.emplace_back(a, label[static_cast<std::size_t>(j)], 1.0);
+                grid.emplace_back(label[static_cast<std::size_t>(j)], a, 1.0);
+            }
+    }
+    SparseMatrix G(n, n);
+    G.setFromTriplets(grid.begin(), grid.end());
+    CHECK(bandwidth(G, reverse_cuthill_mckee(G)) <= 7);
+}
+
+TEST_CASE("The node-block LDLᵀ solves, counts negative eigenvalues and stops at a zero pivot", "[solver][ldlt]") {
+    std::mt19937 random(11);
+    for (int trial = 0; trial < 16; ++trial) {
+        const bool definite = trial % 2 == 0;
+        const SparseMatrix K = node_matrix(10 + 5 * trial, trial % 4 < 2 ? 0 : 3, definite, random);
+        CAPTURE(trial, K.rows());
+        BlockProfileLdlt blocks;
+        REQUIRE(blocks.analyse(K, 3.0));
+        // Twice: the second factorisation starts from the first one's storage.
+        REQUIRE(blocks.factorize(K));
+        REQUIRE(blocks.factorize(K));
+        Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows()), c = Eigen::VectorXd::Random(K.rows());
+        Eigen::VectorXd x, y;
+        blocks.solve(b, c, x, y);
+        const double scale = Eigen::MatrixXd(K).norm();
+        CHECK((K * x - b).norm() <= 1e-10 * scale * x.norm());
+        CHECK((K * y - c).norm() <= 1e-10 * scale * y.norm());
+        // Sylvester: the pivots' signs are the eigenvalues' signs.
+        const std::vector<double>& D = blocks.pivots();
+        CHECK(static_cast<int>(std::count_if(D.begin(), D.end(), [](double d) { return d < 0.0; })) == negative_eigenvalues(K));
+        // Every equation has exactly one pivot.
+        std::vector<int> equations = blocks.pivot_equations();
+        std::sort(equations.begin(), equations.end());
+        for (int i = 0; i < K.rows(); ++i) CHECK(equations[static_cast<std::size_t>(i)] == i);
+    }
+    // A wide grid (30 nodes a row) is left to the general sparse factorisation.
+    const SparseMatrix wide = node_matrix(600, 30, true, random);
+    BlockProfileLdlt blocks;
+    CHECK_FALSE(blocks.analyse(wide, 3.0));
+    // [[1, 1], [1, 1]]: the second pivot is exactly zero.
+    SparseMatrix singular(2, 2);
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) singular.insert(i, j) = 1.0;
+    singular.makeCompressed();
+    REQUIRE(blocks.analyse(singular, 3.0));
+    CHECK_FALSE(blocks.factorize(singular));
+}
+
+TEST_CASE("The linear solver chooses node blocks for a chain and sparse LDLᵀ for a wide grid, with the same answers", "[solver][ldlt]") {
+    std::mt19937 random(5);
+    for (int width : {0, 30}) {
+        const SparseMatrix K = node_matrix(width == 0 ? 200 : 600, width, false, random);
+        LinearSolver solver;
+        REQUIRE(solver.factorize(K));
+        CHECK(solver.uses_node_blocks() == (width == 0));
+        const Eigen::VectorXd b = Eigen::VectorXd::Random(K.rows());
+        const Eigen::VectorXd x = solver.solve(b);
+        CHECK((K * x - b).norm() <= 1e-9 * Eigen::MatrixXd(K).norm() * x.norm());
+        CHECK(solver.negative_pivots() == negative_eigenvalues(K));
+    }
 }

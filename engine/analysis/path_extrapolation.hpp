@@ -27,6 +27,8 @@ public:
     // Forget the path (a new stage may turn back: the old points do not lie ahead of it).
     void clear() { count_ = 0; }
     bool ready() const { return count_ >= 3; }
+    // A step traced since the start or the last clear().
+    bool traced_a_step() const { return count_ >= 2; }
     // The state at `parameter`; only when ready().
     PathPoint at(double parameter) const;
 

@@ -15,6 +15,9 @@
 namespace plastica {
 
 namespace {
+// An arc-length increment within 18° of the reverse of the last one (cosine below minus this)
+// retraced the path.
+constexpr double max_turn_cosine = 0.95;
 // A step that failed after three cuts with a round-off floor this many times the residual
 // tolerance stops the run: no smaller increment lowers that floor.
 constexpr double hopeless_floor = 1e3;
@@ -89,6 +92,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     const AnalysisSpec& a = analysis_;
     StructureProblem problem(system_, u_, lambda_, ubar_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
+    problem.set_contact_band(a.residual_tolerance, peak_lambda_);
     NewtonSettings settings;
     settings.max_iterations = a.max_iterations;
     settings.residual_tolerance = a.residual_tolerance;
@@ -130,6 +134,17 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         // reaches the corner.
         ArcLength c(h, previous_increment_, failures_in_step_ >= 3 || steps_missing_arc_ >= 3);
         result = solve_increment(problem, c, settings, solver_, hook, start);
+        // An increment nearly opposite to the last one went back down the path (the corrector
+        // wandered across an active-set change and met the arc behind): taken as a failure, the
+        // step is cut. Along a smooth path consecutive increments turn by a few degrees, even
+        // through a limit point or a snap-back; a corner where a contact opens may turn the path
+        // by well over a right angle (137° where the arch lifts off the floor), but not back on
+        // itself.
+        if (result.converged() && path_.traced_a_step() && result.increment.size() == previous_increment_.size() &&
+            result.increment.dot(previous_increment_) < -max_turn_cosine * result.increment.norm() * previous_increment_.norm()) {
+            result.rule = Acceptance::none;
+            result.failure = NewtonFailure::turned_back;
+        }
         break;
     }
     }
@@ -330,16 +345,21 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
         // Adaptive increments also bound the error of the hinges' explicit pseudo-springs (η from
         // the start of the step): a step that carries a section further than max_yield_advance
-        // into its yielding range is taken again, smaller in proportion.
+        // into its yielding range is taken again, smaller in proportion. Unless the last smaller
+        // step carried it as far: then the advance is a jump of the section's state (a member
+        // reaching its squash load), which no increment makes smaller.
         const double advance = a.adaptive ? system_.trial_yield_advance() : 0.0;
-        if (advance > max_yield_advance && std::abs(step_h) * 0.5 >= h_min) {
+        const bool advance_jumps = refined_advance_ > 0.0 && advance >= 0.9 * refined_advance_;
+        if (advance > max_yield_advance && std::abs(step_h) * 0.5 >= h_min && !advance_jumps) {
             u_ = u_saved;
             lambda_ = lambda_saved;
             system_.revert();
             ++summary.refined_steps;
+            refined_advance_ = advance;
             h = step_h * std::max(0.25, 0.9 * max_yield_advance / advance);
             continue;
         }
+        refined_advance_ = 0.0;
         system_.commit();
         failures_in_step_ = 0;
         steps_missing_arc_ = missed_arc_in_step_ ? steps_missing_arc_ + 1 : 0;

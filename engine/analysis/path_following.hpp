@@ -106,6 +106,7 @@ private:
     // An arc-length corrector's line missed the arc in this step (it was cut for that), and
     // the count of steps in a row before it that were cut for that.
     bool missed_arc_in_step_ = false;
+    double refined_advance_ = 0.0; // yield advance of this step's last attempt taken again smaller
     int steps_missing_arc_ = 0;
     int steps_since_cut_ = 0;  // converged steps at the increment a cut left (fixed increments)
     double arc_length_ = 0.0;

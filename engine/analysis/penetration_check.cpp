@@ -45,9 +45,14 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
     const std::vector<ElementSpec>& elements = model.elements;
     std::vector<std::size_t> order(elements.size());
     std::iota(order.begin(), order.end(), 0);
-    auto low = [&](std::size_t e) { return std::min(at[elements[e].node_i].x, at[elements[e].node_j].x); };
-    auto high = [&](std::size_t e) { return std::max(at[elements[e].node_i].x, at[elements[e].node_j].x); };
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return low(a) < low(b); });
+    std::vector<double> lows(elements.size()), highs(elements.size());
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+        lows[e] = std::min(at[elements[e].node_i].x, at[elements[e].node_j].x);
+        highs[e] = std::max(at[elements[e].node_i].x, at[elements[e].node_j].x);
+    }
+    auto low = [&](std::size_t e) { return lows[e]; };
+    auto high = [&](std::size_t e) { return highs[e]; };
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lows[a] < lows[b]; });
     for (std::size_t k = 0; k < order.size(); ++k) {
         const ElementSpec& e = elements[order[k]];
         const Point &a = at[e.node_i], &b = at[e.node_j];

@@ -106,9 +106,9 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
             return false;
         }
         for (int a = 0; a < 6; ++a) internal_[dofs[a]] += f[a];
-        const std::vector<int>& held = held_dofs_[e];
-        if (held.empty()) continue;
         // Prescribed displacements act on the free DOFs through the element's tangent.
+        const std::vector<int>& held = held_dofs_[e];
+        if (std::none_of(held.begin(), held.end(), [&](int b) { return ubar[dofs[b]] != 0.0; })) continue;
         if (!element_tangent(e, k)) return false;
         for (int a = 0; a < 6; ++a) {
             const int row = equation_[dofs[a]];
@@ -140,9 +140,13 @@ void StructuralSystem::name_non_finite(std::size_t e) const {
                         std::to_string(spec.node_j + 1) + ")";
 }
 
-bool StructuralSystem::element_tangent(std::size_t e, Matrix6& k) const {
+void StructuralSystem::element_stiffness(std::size_t e, Matrix6& k) const {
     elements_[e].tangent(k);
     if (!pressure_.empty() && pressure_.pressure(e) != 0.0) k += pressure_.stiffness(e, evaluated_load_factor_);
+}
+
+bool StructuralSystem::element_tangent(std::size_t e, Matrix6& k) const {
+    element_stiffness(e, k);
     if (k.allFinite()) return true;
     name_non_finite(e);
     return false;
@@ -150,14 +154,21 @@ bool StructuralSystem::element_tangent(std::size_t e, Matrix6& k) const {
 
 void StructuralSystem::assemble_tangent() const {
     assembler_.set_zero();
-    tangent_finite_ = true;
     Matrix6 k;
     for (std::size_t e = 0; e < elements_.size(); ++e) {
-        tangent_finite_ = element_tangent(e, k) && tangent_finite_;
+        element_stiffness(e, k);
         assembler_.add(e, k);
     }
     for (std::size_t s = 0; s < foundation_.size(); ++s) assembler_.add(elements_.size() + s, foundation_.tangent(s));
     tangent_assembled_ = true;
+    // Finite entries have a finite sum unless it overflows (no structure is that stiff): one sum
+    // instead of a test of every element's entries. Only if it is not finite are the elements
+    // tested one by one, to name the one at fault.
+    const SparseMatrix& K = assembler_.matrix();
+    const Eigen::Map<const Eigen::ArrayXd> values(K.valuePtr(), K.nonZeros());
+    tangent_finite_ = true;
+    if (std::isfinite(values.sum())) return;
+    for (std::size_t e = 0; e < elements_.size() && tangent_finite_; ++e) tangent_finite_ = element_tangent(e, k);
 }
 
 const SparseMatrix& StructuralSystem::tangent() const {

@@ -48,6 +48,7 @@ public:
     bool tangent_finite() const;
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
+    void set_contact_undecided_force(double force) { foundation_.set_undecided_force(force); }
     // No load, no prescribed displacement: moving bases drive the structure.
     bool driven_by_platens() const { return driven_by_platens_; }
     // The forces the moving bases exert at the last evaluation (free DOFs).
@@ -91,7 +92,8 @@ private:
     std::vector<int> equation_;
     // Assembled on demand from the elements' and springs' trial states (tangent()).
     void assemble_tangent() const;
-    bool element_tangent(std::size_t e, Matrix6& k) const; // false (and names it) if not finite
+    void element_stiffness(std::size_t e, Matrix6& k) const; // the member's tangent and its pressure's
+    bool element_tangent(std::size_t e, Matrix6& k) const; // the same; false (and names it) if not finite
     void name_non_finite(std::size_t e) const;
 
     mutable BlockAssembler assembler_;

@@ -15,6 +15,8 @@ bool StructureProblem::evaluate(int iteration, bool release) {
     const bool contact_frozen = iteration >= contact_freeze_ && !release;
     const bool hinges_frozen = iteration >= hinge_freeze_ && !release;
     const bool fibres_frozen = iteration >= fibre_freeze_ && !release;
+    // The force scale from the last evaluation's load (none before the first).
+    system_.set_contact_undecided_force(load_direction_.size() > 0 ? contact_band_ * force_scale(reference_level_) : 0.0);
     if (!system_.evaluate(u_, ubar_, lambda_, contact_frozen, hinges_frozen, fibres_frozen)) return false;
     system_.gather(system_.load(), load_);
     system_.gather(system_.internal_force(), internal_);

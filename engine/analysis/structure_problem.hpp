@@ -30,6 +30,13 @@ public:
     // Driven by platens alone, the residual is measured against the force they press with
     // (λ times their penalty stiffness would be the force on a rigid structure, far above it).
     double force_scale(double level) const override;
+    // A contact whose spring force would stay below this fraction of the residual tolerance (at
+    // the reference load level) is left as it is, open or closed: either way the residual can
+    // meet the tolerance.
+    void set_contact_band(double residual_tolerance, double reference_level) {
+        contact_band_ = residual_tolerance;
+        reference_level_ = reference_level;
+    }
 
 private:
     StructuralSystem& system_;
@@ -42,6 +49,7 @@ private:
     Eigen::VectorXd load_direction_;
     std::vector<int> prescribed_; // full DOF indices with ū ≠ 0
     int contact_freeze_, hinge_freeze_, fibre_freeze_;
+    double contact_band_ = 0.0, reference_level_ = 0.0;
 };
 
 } // namespace plastica

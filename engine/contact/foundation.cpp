@@ -32,7 +32,7 @@ void Foundation::evaluate(const Eigen::VectorXd& u, double load_factor, bool fre
             const Node& n0 = nodes_[sp.node];
             st.gap = bases_[static_cast<std::size_t>(sp.base)].gap(n0.x + d[0], n0.y + d[1], load_factor);
         }
-        const bool touching = st.gap <= 0.0;
+        const bool touching = undecided(st, sp) ? st.active : st.gap <= 0.0;
         if (!freeze_active) {
             changed_ = changed_ || touching != st.active;
             st.active = touching;
@@ -61,8 +61,10 @@ Eigen::Vector3d Foundation::load_rate(std::size_t k) const {
 }
 
 bool Foundation::active_set_consistent() const {
-    for (const SpringState& st : states_)
-        if (st.unilateral && st.active != (st.gap <= 0.0)) return false;
+    for (std::size_t k = 0; k < states_.size(); ++k) {
+        const SpringState& st = states_[k];
+        if (st.unilateral && st.active != (st.gap <= 0.0) && !undecided(st, springs_[k])) return false;
+    }
     return true;
 }
 

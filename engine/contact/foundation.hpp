@@ -8,6 +8,8 @@
 // decides when it has settled.
 #pragma once
 
+#include <cmath>
+
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -37,6 +39,10 @@ public:
     void evaluate(const Eigen::VectorXd& u, double load_factor, bool freeze_active);
     // Whether the active set used matches the geometry (it does unless frozen and stale).
     bool active_set_consistent() const;
+    // A unilateral spring whose force at its gap would be at most this keeps its state: open
+    // or closed, the residual differs by less than that force. A node on the base within
+    // round-off of touching would otherwise flip at every re-decision, and Newton cycle.
+    void set_undecided_force(double force) { undecided_force_ = force; }
     // Whether the last evaluation changed the active set compared with the one before.
     bool active_set_changed() const { return changed_; }
 
@@ -58,6 +64,8 @@ private:
     std::vector<BaseLine> bases_;
     std::vector<SpringState> states_;
     bool changed_ = false;
+    double undecided_force_ = 0.0;
+    bool undecided(const SpringState& st, const FoundationSpring& sp) const { return sp.ky * std::abs(st.gap) <= undecided_force_; }
 };
 
 } // namespace plastica

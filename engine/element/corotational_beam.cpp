@@ -37,7 +37,8 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
     const double ddy = d[4] - d[1];
     const double dx = dx0_ + ddx;
     const double dy = dy0_ + ddy;
-    const double L = std::hypot(dx, dy);
+    // Chords are far from hypot's overflow range: the square root of the sum is exact enough.
+    const double L = std::sqrt(dx * dx + dy * dy);
     const double c = dx / L;
     const double s = dy / L;
     // Rigid rotation of the chord: atan2 gives it in (−π, π]; unwrap it next to the committed
@@ -72,34 +73,37 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
 void CorotationalBeam::tangent(Matrix6& k) const {
     // Bᵀ·k_b·B + z zᵀ N/L + (r zᵀ + z rᵀ)(M_i + M_j)/L², with the rows of B being r, b + e₃ and
     // b + e₆ (b = −z/L). r and z vanish at the rotations and change sign from the first node to
-    // the second, so every column of K is r_j·α + z_j·β plus, at the rotations, a column of
-    // Bᵀ·k_b: two coefficients per row and four columns that are ± two others.
-    const double L = length_trial_;
-    const ChordVectors chord(c_trial_, s_trial_);
-    const double* r = chord.r;
-    const double* z = chord.z;
+    // the second: every row of K is α·r + β·z plus, at the rotations, a row of Bᵀ·k_b, and the
+    // second node's translation rows are the first node's negated.
+    const double inverse_L = 1.0 / length_trial_;
+    const double c = c_trial_, s = s_trial_;
     Eigen::Matrix3d kb;
     law_->trial_tangent(kb);
-    const double axial = q_trial_[0] / L;
-    const double shear = (q_trial_[1] + q_trial_[2]) / (L * L);
-    for (int i = 0; i < 6; ++i) {
-        double w[3]; // row i of Bᵀ·k_b
-        if (i == 2 || i == 5) {
-            const int a = i == 2 ? 1 : 2;
-            w[0] = kb(a, 0), w[1] = kb(a, 1), w[2] = kb(a, 2);
-        } else {
-            const double b = -z[i] / L;
-            for (int m = 0; m < 3; ++m) w[m] = r[i] * kb(0, m) + b * (kb(1, m) + kb(2, m));
-        }
-        const double alpha = w[0] + shear * z[i];
-        const double beta = axial * z[i] + shear * r[i] - (w[1] + w[2]) / L;
-        k(i, 0) = alpha * r[0] + beta * z[0];
-        k(i, 1) = alpha * r[1] + beta * z[1];
-        k(i, 2) = w[1];
-        k(i, 3) = -k(i, 0);
-        k(i, 4) = -k(i, 1);
-        k(i, 5) = w[2];
+    const double axial = q_trial_[0] * inverse_L;
+    const double shear = (q_trial_[1] + q_trial_[2]) * inverse_L * inverse_L;
+    // Row `row` of K from w, its row of Bᵀ·k_b, and r_i, z_i.
+    auto fill = [&](int row, const double w[3], double r, double z) {
+        const double alpha = w[0] + shear * z;
+        const double beta = axial * z + shear * r - (w[1] + w[2]) * inverse_L;
+        k(row, 0) = -alpha * c + beta * s;
+        k(row, 1) = -alpha * s - beta * c;
+        k(row, 2) = w[1];
+        k(row, 3) = -k(row, 0);
+        k(row, 4) = -k(row, 1);
+        k(row, 5) = w[2];
+    };
+    // The first node's translations: r = (−c, −s), z = (s, −c).
+    for (int i = 0; i < 2; ++i) {
+        const double r = i == 0 ? -c : -s, z = i == 0 ? s : -c, b = -z * inverse_L;
+        const double w[3] = {r * kb(0, 0) + b * (kb(1, 0) + kb(2, 0)), r * kb(0, 1) + b * (kb(1, 1) + kb(2, 1)),
+                             r * kb(0, 2) + b * (kb(1, 2) + kb(2, 2))};
+        fill(i, w, r, z);
+        for (int col = 0; col < 6; ++col) k(i + 3, col) = -k(i, col);
     }
+    // The rotations: rows 1 and 2 of k_b.
+    const double w2[3] = {kb(1, 0), kb(1, 1), kb(1, 2)}, w5[3] = {kb(2, 0), kb(2, 1), kb(2, 2)};
+    fill(2, w2, 0.0, 0.0);
+    fill(5, w5, 0.0, 0.0);
 }
 
 void CorotationalBeam::commit() {

@@ -7,7 +7,27 @@
 
 namespace plastica {
 
+namespace {
+// The node blocks serve while their envelope holds at most this many blocks per nonzero block
+// of the lower triangle: chains, rings and frames of a few bays. Past it a fill-reducing order
+// and the general sparse factorisation do less work.
+constexpr double max_block_fill = 3.0;
+} // namespace
+
 void LinearSolver::analyse(const SparseMatrix& K) {
+    analysed_ = true;
+    blocks_used_ = blocks_.analyse(K, max_block_fill);
+    if (blocks_used_) {
+        // Where each pivot's equation has its diagonal entry among K's values (−1: none).
+        diagonal_slot_.assign(static_cast<std::size_t>(K.rows()), -1);
+        std::vector<int> slot_of(static_cast<std::size_t>(K.rows()), -1);
+        for (int col = 0; col < K.outerSize(); ++col)
+            for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+                if (it.row() == col) slot_of[static_cast<std::size_t>(col)] = static_cast<int>(&it.value() - K.valuePtr());
+        const std::vector<int>& equations = blocks_.pivot_equations();
+        for (std::size_t k = 0; k < equations.size(); ++k) diagonal_slot_[k] = slot_of[static_cast<std::size_t>(equations[k])];
+        return;
+    }
     // From the self-adjoint view AMD forms the full pattern once; from a full matrix it would
     // form A + Aᵀ again (two more copies of K: a third of the peak memory of a large model).
     Eigen::AMDOrdering<int> amd;
@@ -44,26 +64,32 @@ void LinearSolver::analyse(const SparseMatrix& K) {
         for (SparseMatrix::InnerIterator it(K, col); it; ++it)
             if (it.row() == col) diagonal_slot_[static_cast<std::size_t>(order_.indices()[col])] = static_cast<int>(&it.value() - K.valuePtr());
     ldlt_.analyse(permuted_k_);
-    analysed_ = true;
 }
 
 bool LinearSolver::factorize(const SparseMatrix& K) {
     if (!analysed_) analyse(K);
     const double* values = K.valuePtr();
-    double* target = permuted_k_.valuePtr();
-    for (std::size_t k = 0; k < source_.size(); ++k) target[k] = values[source_[k]];
-    const bool nonzero_pivots = ldlt_.factorize(permuted_k_);
+    bool nonzero_pivots = false;
+    if (blocks_used_) {
+        nonzero_pivots = blocks_.factorize(K);
+    } else {
+        double* target = permuted_k_.valuePtr();
+        for (std::size_t k = 0; k < source_.size(); ++k) target[k] = values[source_[k]];
+        nonzero_pivots = ldlt_.factorize(permuted_k_);
+    }
     using_lu_ = false;
     // Inertia and the weakest pivot, also when a zero pivot stopped the factorisation (its D
-    // holds that zero): it names the DOF of a mechanism. Each pivot against its own diagonal entry: what elimination left of that equation's
-    // stiffness. Scale-free: a spring of 1e300 beside a beam, or EA 1e12 times EI, does not
-    // make the beam's pivots look small, as a ratio to the largest pivot would.
-    const Eigen::VectorXd& D = ldlt_.pivots();
+    // holds that zero): it names the DOF of a mechanism. Each pivot against its own diagonal
+    // entry: what elimination left of that equation's stiffness. Scale-free: a spring of 1e300
+    // beside a beam, or EA 1e12 times EI, does not make the beam's pivots look small, as a
+    // ratio to the largest pivot would.
+    const double* D = blocks_used_ ? blocks_.pivots().data() : ldlt_.pivots().data();
+    const std::size_t n = static_cast<std::size_t>(K.rows());
     negative_pivots_ = 0;
     pivot_ratio_ = std::numeric_limits<double>::infinity();
-    Eigen::Index smallest_at = 0;
-    for (Eigen::Index k = 0; k < D.size(); ++k) {
-        const int slot = diagonal_slot_[static_cast<std::size_t>(k)];
+    std::size_t smallest_at = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const int slot = diagonal_slot_[k];
         const double diagonal = slot >= 0 ? std::abs(values[slot]) : 0.0;
         const double ratio = diagonal > 0.0 ? std::abs(D[k]) / diagonal : 0.0;
         // A pivot within round-off of zero has no sign.
@@ -73,8 +99,10 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
             smallest_at = k;
         }
     }
-    // D is in the permuted order; report the equation it belongs to.
-    weakest_ = order_inverse_.indices()[smallest_at];
+    // The pivots are in elimination order; report the equation the weakest belongs to.
+    if (n > 0)
+        weakest_ = blocks_used_ ? blocks_.pivot_equations()[smallest_at]
+                                : order_inverse_.indices()[static_cast<Eigen::Index>(smallest_at)];
     if (nonzero_pivots && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
     // A zero pivot: either a singular matrix or an unlucky order for LDLᵀ without pivoting.
     if (!lu_analysed_) {
@@ -97,6 +125,10 @@ void LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
         x = lu_.solve(b);
         return;
     }
+    if (blocks_used_) {
+        blocks_.solve(b, x);
+        return;
+    }
     permuted_ = order_ * b;
     ldlt_.solve_in_place(permuted_);
     x = order_inverse_ * permuted_;
@@ -107,6 +139,10 @@ void LinearSolver::solve(const Eigen::VectorXd& b1, const Eigen::VectorXd& b2, E
     if (using_lu_) {
         x1 = lu_.solve(b1);
         x2 = lu_.solve(b2);
+        return;
+    }
+    if (blocks_used_) {
+        blocks_.solve(b1, b2, x1, x2);
         return;
     }
     permuted_ = order_ * b1;

@@ -1,12 +1,15 @@
 // Solves K x = b for the symmetric tangent. LDLᵀ (no pivoting) tolerates the indefinite
 // tangent past a limit point and gives its inertia: the number of negative pivots counts the
-// eigenvalues below zero (Sylvester). The fill-reducing (AMD) order and the symbolic analysis
-// (sparse_ldlt.hpp) are computed once: K's lower triangle is then copied straight into the
-// permuted upper triangle the factorisation reads, through a fixed slot map. If a pivot
-// vanishes, sparse LU with partial pivoting takes over for that factorisation.
+// eigenvalues below zero (Sylvester). The order and the symbolic analysis are computed once:
+// 3 × 3 node blocks in a bandwidth-reducing order where their envelope is narrow (chains, rings,
+// frames of a few bays: block_profile_ldlt.hpp), else a fill-reducing (AMD) order and the
+// general sparse factorisation (sparse_ldlt.hpp). K's lower triangle is copied straight into the
+// storage the factorisation reads, through a fixed slot map. If a pivot vanishes, sparse LU
+// with partial pivoting takes over for that factorisation.
 #pragma once
 
 #include "solver/block_assembler.hpp"
+#include "solver/block_profile_ldlt.hpp"
 #include "solver/sparse_ldlt.hpp"
 
 #include <Eigen/SparseLU>
@@ -32,6 +35,8 @@ public:
     // nearly free.
     int weakest_equation() const { return weakest_; }
     double pivot_ratio() const { return pivot_ratio_; }
+    // The factorisation the first call chose: node blocks in a narrow envelope, or general sparse.
+    bool uses_node_blocks() const { return blocks_used_; }
 
 private:
     using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
@@ -41,8 +46,10 @@ private:
     Permutation order_inverse_; // equation at each new position
     SparseMatrix permuted_k_;   // upper triangle of order_·K·order_ᵀ
     std::vector<int> source_;   // for each value of permuted_k_, its index in K's values
-    std::vector<int> diagonal_slot_; // for each permuted equation, its diagonal's index in K's values
+    std::vector<int> diagonal_slot_; // for each pivot, its equation's diagonal entry's index in K's values
     SparseLdlt ldlt_;
+    BlockProfileLdlt blocks_;
+    bool blocks_used_ = false; // node blocks (true) or the general sparse factorisation
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
     bool analysed_ = false;
     bool lu_analysed_ = false;

@@ -33,6 +33,7 @@ const char* to_string(NewtonFailure failure) {
     case NewtonFailure::no_constraint_root: return "no point on the constraint";
     case NewtonFailure::iteration_limit: return "iteration limit";
     case NewtonFailure::unsettled: return "active set did not settle";
+    case NewtonFailure::turned_back: return "turned back along the path";
     }
     return "unknown";
 }

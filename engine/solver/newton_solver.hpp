@@ -48,7 +48,8 @@ public:
 };
 
 enum class Acceptance { none, residual, stagnation };
-enum class NewtonFailure { none, diverged, singular, non_finite, no_constraint_root, iteration_limit, unsettled };
+// turned_back: set by path following, for an arc-length increment that went back down the path.
+enum class NewtonFailure { none, diverged, singular, non_finite, no_constraint_root, iteration_limit, unsettled, turned_back };
 
 const char* to_string(Acceptance rule);
 const char* to_string(NewtonFailure failure);
