@@ -1,5 +1,6 @@
 #include "section/fibre_section.hpp"
 
+#include "material/bilinear_steel.hpp"
 #include "material/material_registry.hpp"
 
 #include <algorithm>
@@ -52,6 +53,8 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
         ny_tension_ += fibres_.back().limit_tension * f.area;
         ny_compression_ += fibres_.back().limit_compression * f.area;
     }
+    all_bilinear_ = std::all_of(fibres_.begin(), fibres_.end(),
+                                [](FibrePoint& f) { return dynamic_cast<BilinearSteel*>(&*f.material) != nullptr; });
     build_capacity_curves();
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
@@ -75,19 +78,24 @@ template <bool on_branches>
 SectionResponse FibreSection::set_trial(double eps0, double curvature) {
     eps0_t_ = eps0;
     phi_t_ = curvature;
-    SectionResponse r;
-    double k11 = 0.0, k12 = 0.0, k22 = 0.0;
+    // Sums in locals: the compiler keeps them in registers across the fibres' laws.
+    double N = 0.0, M = 0.0, k11 = 0.0, k12 = 0.0, k22 = 0.0;
     for (FibrePoint& f : fibres_) {
-        const StressTangent st = on_branches ? f.material->set_trial_strain_on_branch(eps0 - f.y * curvature)
-                                             : f.material->set_trial_strain(eps0 - f.y * curvature);
+        const double strain = eps0 - f.y * curvature;
+        const StressTangent st = on_branches    ? f.material->set_trial_strain_on_branch(strain)
+                                 : all_bilinear_ ? static_cast<BilinearSteel&>(*f.material).trial(strain)
+                                                 : f.material->set_trial_strain(strain);
         const double s = st.stress * f.area;
         const double t = st.tangent * f.area;
-        r.N += s;
-        r.M -= s * f.y;
+        N += s;
+        M -= s * f.y;
         k11 += t;
         k12 -= t * f.y;
         k22 += t * f.y * f.y;
     }
+    SectionResponse r;
+    r.N = N;
+    r.M = M;
     r.tangent << k11, k12, k12, k22;
     return r;
 }
