@@ -1,6 +1,7 @@
 // Reverse Cuthill–McKee: an order of a sparse symmetric matrix's equations that keeps its
-// entries near the diagonal (a narrow envelope). A frame whose members form chains, rings or a
-// few bays then factorises in a profile a few equations wide, with no indices to follow.
+// entries near the diagonal (a narrow envelope). The node-block factorisation orders its block
+// rows by it: a frame whose members form chains, rings or a few bays then factorises in an
+// envelope a block or two wide (block_profile_ldlt.hpp).
 #pragma once
 
 #include "solver/block_assembler.hpp"
