@@ -99,6 +99,8 @@ bool BlockProfileLdlt::analyse(const SparseMatrix& K, double max_fill) {
     pivot_equations_.resize(static_cast<std::size_t>(n));
     for (std::size_t p = 0, at = 0; p < nb; ++p)
         for (int l = 0; l < size_[p]; ++l) pivot_equations_[at++] = leader[static_cast<std::size_t>(order[p])] + l;
+    pivots_of_.resize(static_cast<std::size_t>(n));
+    for (std::size_t k = 0; k < pivot_equations_.size(); ++k) pivots_of_[static_cast<std::size_t>(pivot_equations_[k])] = static_cast<int>(k);
     pivots_.assign(static_cast<std::size_t>(n), 0.0);
 
     // Each value of K's lower triangle goes to the block below the diagonal that holds its pair

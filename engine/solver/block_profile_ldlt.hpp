@@ -29,6 +29,7 @@ public:
     // The scalar pivots in elimination order, and the equation of each.
     const std::vector<double>& pivots() const { return pivots_; }
     const std::vector<int>& pivot_equations() const { return pivot_equations_; }
+    int pivot_of(int equation) const { return pivots_of_[static_cast<std::size_t>(equation)]; }
 
 private:
     // A diagonal block's own LDLᵀ: D = l·diag(d)·lᵀ with l unit lower.
@@ -52,6 +53,7 @@ private:
     std::vector<BlockPivots> block_pivots_;
     std::vector<double> pivots_;
     std::vector<int> pivot_equations_;
+    std::vector<int> pivots_of_; // the inverse of pivot_equations_
     mutable std::vector<double> work_; // the padded right-hand side being solved
 };
 

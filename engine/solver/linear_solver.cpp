@@ -17,17 +17,23 @@ constexpr double max_block_fill = 3.0;
 void LinearSolver::analyse(const SparseMatrix& K) {
     analysed_ = true;
     blocks_used_ = blocks_.analyse(K, max_block_fill);
-    if (blocks_used_) {
-        // Where each pivot's equation has its diagonal entry among K's values (−1: none).
-        diagonal_slot_.assign(static_cast<std::size_t>(K.rows()), -1);
-        std::vector<int> slot_of(static_cast<std::size_t>(K.rows()), -1);
-        for (int col = 0; col < K.outerSize(); ++col)
-            for (SparseMatrix::InnerIterator it(K, col); it; ++it)
-                if (it.row() == col) slot_of[static_cast<std::size_t>(col)] = static_cast<int>(&it.value() - K.valuePtr());
-        const std::vector<int>& equations = blocks_.pivot_equations();
-        for (std::size_t k = 0; k < equations.size(); ++k) diagonal_slot_[k] = slot_of[static_cast<std::size_t>(equations[k])];
-        return;
-    }
+    if (!blocks_used_) analyse_sparse(K);
+    // Where each pivot's equation has its diagonal entry among K's values (−1: none).
+    diagonal_slot_.assign(static_cast<std::size_t>(K.rows()), -1);
+    for (int col = 0; col < K.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+            if (it.row() == col) diagonal_slot_[static_cast<std::size_t>(pivot_of(col))] = static_cast<int>(&it.value() - K.valuePtr());
+}
+
+int LinearSolver::pivot_of(int equation) const {
+    return blocks_used_ ? blocks_.pivot_of(equation) : order_.indices()[equation];
+}
+
+int LinearSolver::equation_of(std::size_t pivot) const {
+    return blocks_used_ ? blocks_.pivot_equations()[pivot] : order_inverse_.indices()[static_cast<Eigen::Index>(pivot)];
+}
+
+void LinearSolver::analyse_sparse(const SparseMatrix& K) {
     // From the self-adjoint view AMD forms the full pattern once; from a full matrix it would
     // form A + Aᵀ again (two more copies of K: a third of the peak memory of a large model).
     Eigen::AMDOrdering<int> amd;
@@ -58,11 +64,6 @@ void LinearSolver::analyse(const SparseMatrix& K) {
             permuted_k_.valuePtr()[at] = 0.0;
             source_[static_cast<std::size_t>(at)] = static_cast<int>(&it.value() - K.valuePtr());
         }
-    // Where each permuted equation's diagonal entry sits among K's values (−1: none).
-    diagonal_slot_.assign(static_cast<std::size_t>(K.rows()), -1);
-    for (int col = 0; col < K.outerSize(); ++col)
-        for (SparseMatrix::InnerIterator it(K, col); it; ++it)
-            if (it.row() == col) diagonal_slot_[static_cast<std::size_t>(order_.indices()[col])] = static_cast<int>(&it.value() - K.valuePtr());
     ldlt_.analyse(permuted_k_);
 }
 
@@ -100,9 +101,7 @@ bool LinearSolver::factorize(const SparseMatrix& K) {
         }
     }
     // The pivots are in elimination order; report the equation the weakest belongs to.
-    if (n > 0)
-        weakest_ = blocks_used_ ? blocks_.pivot_equations()[smallest_at]
-                                : order_inverse_.indices()[static_cast<Eigen::Index>(smallest_at)];
+    if (n > 0) weakest_ = equation_of(smallest_at);
     if (nonzero_pivots && std::isfinite(pivot_ratio_) && pivot_ratio_ > zero_pivot) return true;
     // A zero pivot: either a singular matrix or an unlucky order for LDLᵀ without pivoting.
     if (!lu_analysed_) {

@@ -41,6 +41,9 @@ public:
 private:
     using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
     void analyse(const SparseMatrix& K);
+    void analyse_sparse(const SparseMatrix& K); // AMD order, permuted copy, sparse symbolic analysis
+    int pivot_of(int equation) const;           // its position in elimination order
+    int equation_of(std::size_t pivot) const;
 
     Permutation order_;         // new position of each equation
     Permutation order_inverse_; // equation at each new position
