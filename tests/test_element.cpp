@@ -34,13 +34,21 @@ Matrix6 finite_difference_tangent(CorotationalBeam& beam, const Vector6& d) {
     });
 }
 
+// An elastic element from (0.3, −0.2) to (2.1, 0.9) and a large, general motion of it: stretch,
+// rotation past π/2, bending.
+CorotationalBeam general_beam() { return CorotationalBeam({0.3, -0.2}, {2.1, 0.9}, std::make_unique<ElasticLaw>(50.0, 3.0, 2.1)); }
+
+Vector6 general_motion() {
+    Vector6 d;
+    d << 0.1, -0.3, 1.9, -1.7, 0.8, 2.6;
+    return d;
+}
+
 } // namespace
 
 TEST_CASE("The co-rotational tangent equals a finite difference of the internal force", "[element]") {
-    CorotationalBeam beam({0.3, -0.2}, {2.1, 0.9}, std::make_unique<ElasticLaw>(50.0, 3.0, 2.1));
-    // A large, general motion: stretch, rotation past π/2, bending.
-    Vector6 d;
-    d << 0.1, -0.3, 1.9, -1.7, 0.8, 2.6;
+    CorotationalBeam beam = general_beam();
+    const Vector6 d = general_motion();
     Vector6 f;
     Matrix6 K;
     beam.compute(d, f, &K);
@@ -48,6 +56,26 @@ TEST_CASE("The co-rotational tangent equals a finite difference of the internal 
     INFO("K =\n" << K << "\nK_fd =\n" << K_fd);
     CHECK((K - K_fd).norm() < 1e-6 * K.norm());
     CHECK((K - K.transpose()).norm() < 1e-10 * K.norm()); // conservative loading: symmetric
+}
+
+TEST_CASE("A tangent given another axial force differs by that force's geometric stiffness alone", "[element]") {
+    // K(N') − K(N) = z zᵀ (N' − N)/L with z = [s −c 0 −s c 0] of the current chord: the first
+    // tangent at an extrapolated start takes the path's axial force this way.
+    CorotationalBeam beam = general_beam();
+    Vector6 f;
+    Matrix6 K;
+    beam.compute(general_motion(), f, &K);
+    beam.commit(); // forces() reports the trial's axial force
+    const double dx = (2.1 - 1.7) - (0.3 + 0.1), dy = (0.9 + 0.8) - (-0.2 - 0.3), L = std::hypot(dx, dy);
+    Vector6 z;
+    z << dy / L, -dx / L, 0.0, -dy / L, dx / L, 0.0;
+    const Matrix6 zz = z * z.transpose() / L;
+    Matrix6 K_unstressed, K_other;
+    beam.tangent(K_unstressed, 0.0);
+    beam.tangent(K_other, 7.5);
+    REQUIRE(std::abs(beam.forces().axial) > 1.0);
+    CHECK((K - K_unstressed - zz * beam.forces().axial).norm() < 1e-12 * K.norm());
+    CHECK((K_other - K_unstressed - zz * 7.5).norm() < 1e-12 * K.norm());
 }
 
 TEST_CASE("A rigid-body rotation of any size produces no internal force", "[element]") {

@@ -233,20 +233,23 @@ TEST_CASE("One plastic hinge driven past its capacity: quadratic steps, moment h
 }
 
 TEST_CASE("The path extrapolation reproduces a quadratic path exactly and keeps distinct parameters", "[newton]") {
-    // u(s) = (s², 3s − 1), λ(s) = 2s² + 1 through s = 0, 1, 3: the predictor at 4.5 is exact.
+    // u(s) = (s², 3s − 1), λ(s) = 2s² + 1, N(s) = (1 − s², 5s) through s = 0, 1, 3: the predictor
+    // at 4.5 is exact.
     const auto u = [](double s) { return Eigen::Vector2d(s * s, 3.0 * s - 1.0); };
     const auto lambda = [](double s) { return 2.0 * s * s + 1.0; };
+    const auto axial = [](double s) { return Eigen::Vector2d(1.0 - s * s, 5.0 * s); };
     PathExtrapolation path;
-    for (double s : {0.0, 1.0}) path.add(s, u(s), lambda(s));
+    for (double s : {0.0, 1.0}) path.add(s, u(s), lambda(s), axial(s));
     CHECK_FALSE(path.ready());
-    path.add(1.0, u(1.0), lambda(1.0)); // the same parameter again replaces the point there
+    path.add(1.0, u(1.0), lambda(1.0), axial(1.0)); // the same parameter again replaces the point there
     CHECK_FALSE(path.ready());
-    path.add(3.0, u(3.0), lambda(3.0));
+    path.add(3.0, u(3.0), lambda(3.0), axial(3.0));
     REQUIRE(path.ready());
     const PathPoint p = path.at(4.5);
     CHECK((p.displacement - u(4.5)).norm() <= 1e-12 * u(4.5).norm());
     CHECK(p.load_factor == Approx(lambda(4.5)).epsilon(1e-14));
+    CHECK((p.axial_forces - axial(4.5)).norm() <= 1e-12 * axial(4.5).norm());
     // A fourth point drops the oldest: through s = 1, 3, 4 it stays exact.
-    path.add(4.0, u(4.0), lambda(4.0));
+    path.add(4.0, u(4.0), lambda(4.0), axial(4.0));
     CHECK(path.at(6.0).load_factor == Approx(lambda(6.0)).epsilon(1e-14));
 }

@@ -2,7 +2,8 @@
 
 namespace plastica {
 
-void PathExtrapolation::add(double parameter, const Eigen::VectorXd& displacement, double load_factor) {
+void PathExtrapolation::add(double parameter, const Eigen::VectorXd& displacement, double load_factor,
+                            const Eigen::VectorXd& axial_forces) {
     // Points at distinct parameters only (the quadratic through them divides by their spacing):
     // a state at the same parameter replaces the one there.
     if (count_ > 0 && parameter == points_[count_ - 1].parameter) --count_;
@@ -15,6 +16,7 @@ void PathExtrapolation::add(double parameter, const Eigen::VectorXd& displacemen
     p.parameter = parameter;
     p.displacement = displacement;
     p.load_factor = load_factor;
+    p.axial_forces = axial_forces;
 }
 
 PathPoint PathExtrapolation::at(double s) const {
@@ -29,6 +31,7 @@ PathPoint PathExtrapolation::at(double s) const {
     p.parameter = s;
     p.displacement = w[0] * points_[0].displacement + w[1] * points_[1].displacement + w[2] * points_[2].displacement;
     p.load_factor = w[0] * points_[0].load_factor + w[1] * points_[1].load_factor + w[2] * points_[2].load_factor;
+    p.axial_forces = w[0] * points_[0].axial_forces + w[1] * points_[1].axial_forces + w[2] * points_[2].axial_forces;
     return p;
 }
 

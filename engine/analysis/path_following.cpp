@@ -105,12 +105,14 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     };
     IncrementGuess guess;
     const IncrementGuess* start = nullptr;
+    PathPoint ahead;
     if (extrapolate && extrapolating()) {
-        const PathPoint ahead = path_.at(path_parameter() + (a.scheme == Scheme::arc_length ? std::abs(h) : h));
+        ahead = path_.at(path_parameter() + (a.scheme == Scheme::arc_length ? std::abs(h) : h));
         guess.dx = ahead.displacement - system_.gather(u_);
         // Under load control the load factor is the path parameter: its step exactly.
         guess.dlambda = a.scheme == Scheme::load_control ? h : ahead.load_factor - lambda_;
         start = &guess;
+        problem.predict_axial_forces(ahead.axial_forces);
         settings.fail_fast = true; // the tangent's predictor is the fallback
     }
     NewtonResult result;
@@ -231,7 +233,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         initial_flexibility_ = f.dot(solver_.solve(f));
     }
     if (!publish(make_result(0, 0, Acceptance::none))) return finish(0);
-    path_.add(path_parameter(), system_.gather(u_), lambda_);
+    path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
 
     double h = a.initial_increment;
     const double h_min = a.min_increment;
@@ -367,7 +369,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
         ++step_;
         arc_length_ += previous_increment_.norm();
-        path_.add(path_parameter(), system_.gather(u_), lambda_);
+        path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
         const std::string crossing = check_penetration();
         if (!publish(make_result(step_, outcome.iterations, outcome.rule))) return finish(step_ - 1);
         if (!crossing.empty()) {
@@ -440,7 +442,7 @@ double PathFollowing::begin_stage(std::size_t k) {
     // a mechanism's tangent, which throws the first iterate far off.
     if (direction_ != previous_direction) system_.predict_unloading();
     path_.clear();
-    path_.add(path_parameter(), system_.gather(u_), lambda_);
+    path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
     return direction_ * s.increment;
 }
 

@@ -45,10 +45,12 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
     const std::vector<ElementSpec>& elements = model.elements;
     std::vector<std::size_t> order(elements.size());
     std::iota(order.begin(), order.end(), 0);
-    std::vector<double> lows(elements.size()), highs(elements.size());
+    std::vector<double> lows(elements.size()), highs(elements.size()), lengths(elements.size());
     for (std::size_t e = 0; e < elements.size(); ++e) {
-        lows[e] = std::min(at[elements[e].node_i].x, at[elements[e].node_j].x);
-        highs[e] = std::max(at[elements[e].node_i].x, at[elements[e].node_j].x);
+        const Point &a = at[elements[e].node_i], &b = at[elements[e].node_j];
+        lows[e] = std::min(a.x, b.x);
+        highs[e] = std::max(a.x, b.x);
+        lengths[e] = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
     }
     auto low = [&](std::size_t e) { return lows[e]; };
     auto high = [&](std::size_t e) { return highs[e]; };
@@ -56,12 +58,11 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
     for (std::size_t k = 0; k < order.size(); ++k) {
         const ElementSpec& e = elements[order[k]];
         const Point &a = at[e.node_i], &b = at[e.node_j];
-        const double la = std::hypot(b.x - a.x, b.y - a.y);
         for (std::size_t m = k + 1; m < order.size() && low(order[m]) <= high(order[k]); ++m) {
             const ElementSpec& f = elements[order[m]];
             if (f.node_i == e.node_i || f.node_i == e.node_j || f.node_j == e.node_i || f.node_j == e.node_j) continue;
             const Point &c = at[f.node_i], &d = at[f.node_j];
-            const double band = 1e-9 * la * std::hypot(d.x - c.x, d.y - c.y);
+            const double band = 1e-9 * lengths[order[k]] * lengths[order[m]];
             if (cross(a, b, c, d, band))
                 return "the structure passes through itself: element " + std::to_string(order[k] + 1) +
                        " crosses element " + std::to_string(order[m] + 1) + " near " + where(a);

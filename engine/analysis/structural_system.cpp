@@ -73,6 +73,7 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
         const Node& a = model.nodes[e.node_i];
         const Node& b = model.nodes[e.node_j];
         distributed_.push_back(model.sections[e.section].plasticity == Plasticity::distributed);
+        elastic_.push_back(model.sections[e.section].plasticity == Plasticity::none);
         elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
         std::vector<int> held;
         for (int local = 0; local < 6; ++local)
@@ -88,6 +89,7 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
     internal_.setZero();
     coupling_.setZero();
     tangent_assembled_ = false;
+    tangent_takes_axial_forces_ = false;
     evaluated_load_factor_ = load_factor;
     Vector6 d, f;
     Matrix6 k;
@@ -140,8 +142,23 @@ void StructuralSystem::name_non_finite(std::size_t e) const {
                         std::to_string(spec.node_j + 1) + ")";
 }
 
+void StructuralSystem::take_axial_forces_in_tangent(const Eigen::VectorXd& forces) {
+    tangent_axial_forces_ = forces;
+    tangent_takes_axial_forces_ = true;
+    tangent_assembled_ = false;
+}
+
+Eigen::VectorXd StructuralSystem::axial_forces() const {
+    Eigen::VectorXd forces(elements_.size());
+    for (std::size_t e = 0; e < elements_.size(); ++e) forces[static_cast<Eigen::Index>(e)] = elements_[e].forces().axial;
+    return forces;
+}
+
 void StructuralSystem::element_stiffness(std::size_t e, Matrix6& k) const {
-    elements_[e].tangent(k);
+    if (tangent_takes_axial_forces_ && elastic_[e])
+        elements_[e].tangent(k, tangent_axial_forces_[static_cast<Eigen::Index>(e)]);
+    else
+        elements_[e].tangent(k);
     if (!pressure_.empty() && pressure_.pressure(e) != 0.0) k += pressure_.stiffness(e, evaluated_load_factor_);
 }
 

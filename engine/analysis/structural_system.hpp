@@ -44,6 +44,12 @@ public:
     const Eigen::VectorXd& load() const { return load_; }
     // The tangent at the last evaluation, assembled on first use.
     const SparseMatrix& tangent() const;
+    // The tangent of the last evaluation takes these axial forces (one per member) into the
+    // geometric stiffness of its elastic members instead of the evaluated ones
+    // (path_extrapolation.hpp says why, and why not those that may yield).
+    void take_axial_forces_in_tangent(const Eigen::VectorXd& forces);
+    // The members' axial forces at the committed state.
+    Eigen::VectorXd axial_forces() const;
     // Whether that tangent is finite; if not, non_finite_where() names the element.
     bool tangent_finite() const;
     const std::string& non_finite_where() const { return non_finite_where_; }
@@ -83,6 +89,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<CorotationalBeam> elements_;
     std::vector<bool> distributed_; // per element: fibre sections along it (else hinges or elastic)
+    std::vector<bool> elastic_;     // per element: neither hinges nor fibre sections
     std::vector<std::vector<int>> held_dofs_; // per element: its local DOFs that are supported or prescribed
     Foundation foundation_;
     FollowerPressure pressure_;
@@ -99,6 +106,8 @@ private:
     mutable BlockAssembler assembler_;
     mutable bool tangent_assembled_ = false;
     mutable bool tangent_finite_ = true;
+    Eigen::VectorXd tangent_axial_forces_;
+    bool tangent_takes_axial_forces_ = false; // for the last evaluation's tangent
     double evaluated_load_factor_ = 0.0; // of the last evaluation: follower pressure's stiffness
     Eigen::VectorXd internal_;
     Eigen::VectorXd coupling_;

@@ -17,6 +17,9 @@ public:
                      const Eigen::VectorXd& ubar,
                      int contact_freeze, int hinge_freeze, int fibre_freeze);
 
+    // The first tangent (at an extrapolated start) takes these axial forces, one per member, in
+    // its geometric stiffness (path_extrapolation.hpp); they must outlive the increment.
+    void predict_axial_forces(const Eigen::VectorXd& forces) { predicted_axial_forces_ = &forces; }
     bool evaluate(int iteration, bool release) override;
     const Eigen::VectorXd& residual() const override { return residual_; }
     const Eigen::VectorXd& load_direction() const override { return load_direction_; }
@@ -50,6 +53,7 @@ private:
     std::vector<int> prescribed_; // full DOF indices with ū ≠ 0
     int contact_freeze_, hinge_freeze_, fibre_freeze_;
     double contact_band_ = 0.0, reference_level_ = 0.0;
+    const Eigen::VectorXd* predicted_axial_forces_ = nullptr;
 };
 
 } // namespace plastica

@@ -70,7 +70,7 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
     if (tangent) this->tangent(*tangent);
 }
 
-void CorotationalBeam::tangent(Matrix6& k) const {
+void CorotationalBeam::tangent(Matrix6& k, double axial_force) const {
     // Bᵀ·k_b·B + z zᵀ N/L + (r zᵀ + z rᵀ)(M_i + M_j)/L², with the rows of B being r, b + e₃ and
     // b + e₆ (b = −z/L). r and z vanish at the rotations and change sign from the first node to
     // the second: every row of K is α·r + β·z plus, at the rotations, a row of Bᵀ·k_b, and the
@@ -79,7 +79,7 @@ void CorotationalBeam::tangent(Matrix6& k) const {
     const double c = c_trial_, s = s_trial_;
     Eigen::Matrix3d kb;
     law_->trial_tangent(kb);
-    const double axial = q_trial_[0] * inverse_L;
+    const double axial = axial_force * inverse_L;
     const double shear = (q_trial_[1] + q_trial_[2]) * inverse_L * inverse_L;
     // Row `row` of K from w, its row of Bᵀ·k_b, and r_i, z_i.
     auto fill = [&](int row, const double w[3], double r, double z) {

@@ -36,7 +36,10 @@ public:
     // internal force vector and, if asked, the tangent.
     void compute(const Vector6& d, Vector6& force, Matrix6* tangent);
     // The tangent at the last trial state (after compute).
-    void tangent(Matrix6& k) const;
+    void tangent(Matrix6& k) const { tangent(k, q_trial_[0]); }
+    // The same with the geometric stiffness of another axial force (the trial's stretch may be
+    // an extrapolation's error, which a stiff membrane turns into a wild force).
+    void tangent(Matrix6& k, double axial_force) const;
     void commit();
     void revert();
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }
