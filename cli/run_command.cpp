@@ -179,6 +179,7 @@ int run_command(const Args& args) {
     std::signal(SIGTERM, request_stop);
     RunControl control;
     control.interrupt = &stop_requested;
+    control.report_sections = !curves_only;
     const auto t1 = std::chrono::steady_clock::now();
     // A step is written everywhere or nowhere: when the series cannot take it (a full disk),
     // its curve row is taken back, and the run stops with every output at the step before.

@@ -302,3 +302,27 @@ TEST_CASE("Segments inside an element resolve the plastic zone as a finer mesh d
         CHECK(segmented == Approx(plain).epsilon(1e-5));
     }
 }
+
+TEST_CASE("A run for its curve alone leaves the sections out of its steps and reaches the same curve", "[distributed]") {
+    // The shipped plastic-zone ring to δ = 50, past first yield: with and without the sections
+    // in each step's result the steps are the same to the bit.
+    const Model model = read_scene_text(replaced(scene_file_text("models/ring_distributed.toml"),
+                                                 "target_displacement = 100.0", "target_displacement = 50.0"),
+                                        "ring_distributed.toml");
+    std::vector<StepResult> full, lean;
+    PathFollowing(model).run({[&](const StepResult& r) { full.push_back(r); }});
+    RunControl curve_alone;
+    curve_alone.report_sections = false;
+    PathFollowing(model).run({[&](const StepResult& r) { lean.push_back(r); }}, curve_alone);
+    REQUIRE(full.size() == lean.size());
+    REQUIRE(full.size() > 10);
+    bool yielded = false;
+    for (const ElementResult& e : full.back().elements)
+        for (const SectionReport& s : e.sections) yielded = yielded || s.yielded_share > 0.0;
+    CHECK(yielded);
+    for (std::size_t k = 0; k < full.size(); ++k) {
+        CHECK(lean[k].load == full[k].load);
+        CHECK(lean[k].control_displacement == full[k].control_displacement);
+        for (const ElementResult& e : lean[k].elements) CHECK(e.sections.empty());
+    }
+}

@@ -59,7 +59,7 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
-    system_.report(u_, lambda_ * system_.load(), r);
+    system_.report(u_, lambda_ * system_.load(), r, report_sections_);
     if (model_.report.measure == ReportSpec::Measure::platen) {
         r.load = 0.0;
         for (std::size_t k = 0; k < r.springs.size(); ++k)
@@ -190,6 +190,7 @@ RoundOffFloor PathFollowing::round_off_floor() const {
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {
     RunSummary summary;
+    report_sections_ = control.report_sections;
     try {
         return run_steps(observers, control, summary);
     } catch (const std::bad_alloc&) {

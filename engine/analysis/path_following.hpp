@@ -37,6 +37,10 @@ struct RunControl {
     // iteration on, re-checked at equilibrium and re-decided where contradicted: without it
     // fibres flip between yielding and unloading from one iteration to the next.
     int freeze_fibres_after = 3;
+    // Each step's result lists the sections along members with distributed plasticity (their
+    // yielded share, curvature, moment): a series draws them, a curve does not need them, and
+    // scanning every fibre for them costs 5 % of a plastic-zone run.
+    bool report_sections = true;
 };
 
 // Per-iteration record for solver diagnostics (quadratic convergence checks).
@@ -78,6 +82,7 @@ private:
     RoundOffFloor round_off_floor() const;
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;
+    bool report_sections_ = true; // RunControl::report_sections of the run
     double control_value(const Eigen::VectorXd& u) const;
     StepResult make_result(int step, int iterations, Acceptance rule) const;
     // Whether the current stage's target is reached (within round-off of its increment).

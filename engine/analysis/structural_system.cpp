@@ -269,7 +269,7 @@ void StructuralSystem::revert() {
 }
 
 void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& external,
-                              StepResult& out) const {
+                              StepResult& out, bool with_sections) const {
     out.displacement.assign(u.data(), u.data() + u.size());
     out.reaction.assign(u.size(), 0.0);
     out.applied_load.assign(external.data(), external.data() + external.size());
@@ -288,7 +288,7 @@ void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& e
         ElementResult& r = out.elements[e];
         r.forces = elements_[e].forces();
         r.hinged = elements_[e].law().has_hinges();
-        r.sections = elements_[e].law().sections();
+        if (with_sections) r.sections = elements_[e].law().sections();
         for (int end = 0; end < 2 && r.hinged; ++end) {
             r.hinge[end] = elements_[e].law().hinge(end);
             if (r.hinge[end].state != HingeState::elastic) ++out.hinge_count;

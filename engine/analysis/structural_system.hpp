@@ -79,8 +79,10 @@ public:
     void predict_unloading();
     void revert();
 
-    // Fills the element, spring and reaction parts of a step result (committed state).
-    void report(const Eigen::VectorXd& u, const Eigen::VectorXd& external, StepResult& out) const;
+    // Fills the element, spring and reaction parts of a step result (committed state), the
+    // sections along the members if asked.
+    void report(const Eigen::VectorXd& u, const Eigen::VectorXd& external, StepResult& out,
+                bool with_sections = true) const;
 
     const std::vector<CorotationalBeam>& elements() const { return elements_; }
 

@@ -80,30 +80,46 @@ void SegmentedPlasticityLaw::solve_inner(std::vector<Block>& b) const {
 }
 
 void SegmentedPlasticityLaw::condense(std::vector<Inner>& inner_forces, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
+    // The maps are sparse, and the products are written out entry by entry (dense 3 × 3 products
+    // were a fifth of a plastic-zone run): basic_map_ is diag(l/L0, b_i, b_j), and an inner
+    // node's (w, θ) acts on the end rotations alone, near·(w, θ) = (0, w/l + θ, w/l) and
+    // far·(w, θ) = (0, −w/l, −w/l + θ), 1/l = near_(1, 0).
     const std::size_t n = segments_.size(), m = n - 1;
     const std::vector<Eigen::Vector3d>& f = segment_forces_;
     const std::vector<Eigen::Matrix3d>& S = segment_tangents_;
-    // Basic forces and K_ee.
+    // Basic forces and K_ee = Σ Bᵀ S B.
     q.setZero();
     k.setZero();
     for (std::size_t s = 0; s < n; ++s) {
-        q.noalias() += basic_map_[s].transpose() * f[s];
-        k.noalias() += basic_map_[s].transpose() * S[s] * basic_map_[s];
+        const Eigen::Vector3d b = basic_map_[s].diagonal();
+        q += b.cwiseProduct(f[s]);
+        k += b.asDiagonal() * S[s] * b.asDiagonal();
     }
-    // Inner node i (element node i + 1) is the far node of segment i and the near one of
-    // segment i + 1. Block LDLᵀ of the chain: pivot_i = D_i − C_{i−1}ᵀ pivot_{i−1}⁻¹ C_{i−1}.
+    // Inner node i (element node i + 1) is the far node of segment i (a) and the near one of
+    // segment i + 1 (b). Block LDLᵀ of the chain: pivot_i = D_i − C_{i−1}ᵀ pivot_{i−1}⁻¹ C_{i−1}.
     inner_forces.resize(m);
     for (std::size_t i = 0; i < m; ++i) {
-        const InnerMap &far = far_[i], &near = near_[i + 1];
-        inner_forces[i].noalias() = far.transpose() * f[i] + near.transpose() * f[i + 1];
-        coupling_[i].noalias() = far.transpose() * S[i] * basic_map_[i] + near.transpose() * S[i + 1] * basic_map_[i + 1];
-        Eigen::Matrix2d pivot = far.transpose() * S[i] * far + near.transpose() * S[i + 1] * near;
+        const Eigen::Vector3d &fa = f[i], &fb = f[i + 1];
+        const Eigen::Matrix3d &Sa = S[i], &Sb = S[i + 1];
+        const double ga = near_[i](1, 0), gb = near_[i + 1](1, 0);
+        const Eigen::Vector3d ba = basic_map_[i].diagonal(), bb = basic_map_[i + 1].diagonal();
+        inner_forces[i] << -ga * (fa[1] + fa[2]) + gb * (fb[1] + fb[2]), fa[2] + fb[1];
+        for (int j = 0; j < 3; ++j) {
+            coupling_[i](0, j) = -ga * (Sa(1, j) + Sa(2, j)) * ba[j] + gb * (Sb(1, j) + Sb(2, j)) * bb[j];
+            coupling_[i](1, j) = Sa(2, j) * ba[j] + Sb(1, j) * bb[j];
+        }
+        const double sum_a = Sa(1, 1) + Sa(1, 2) + Sa(2, 1) + Sa(2, 2), sum_b = Sb(1, 1) + Sb(1, 2) + Sb(2, 1) + Sb(2, 2);
+        Eigen::Matrix2d pivot;
+        pivot << ga * ga * sum_a + gb * gb * sum_b, -ga * (Sa(1, 2) + Sa(2, 2)) + gb * (Sb(1, 1) + Sb(2, 1)),
+            -ga * (Sa(2, 1) + Sa(2, 2)) + gb * (Sb(1, 1) + Sb(1, 2)), Sa(2, 2) + Sb(1, 1);
         if (i > 0) {
             multiplier_[i].noalias() = upper_[i - 1].transpose() * pivot_inverse_[i - 1];
             pivot.noalias() -= multiplier_[i] * upper_[i - 1];
         }
         pivot_inverse_[i] = pivot.inverse();
-        if (i + 1 < m) upper_[i].noalias() = near.transpose() * S[i + 1] * far_[i + 1];
+        // near(b)ᵀ S_b far(b): the coupling of this node to the next through segment b.
+        if (i + 1 < m)
+            upper_[i] << -gb * gb * sum_b, gb * (Sb(1, 2) + Sb(2, 2)), -gb * (Sb(1, 1) + Sb(1, 2)), Sb(1, 2);
     }
     solved_ = coupling_;
     solve_inner(solved_);
