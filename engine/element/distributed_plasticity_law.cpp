@@ -21,15 +21,21 @@ void DistributedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::V
         p.trial = frozen_ ? p.section.set_trial_deformation_on_branches(eps0, kappa)
                           : p.section.set_trial_deformation(eps0, kappa);
         if (frozen_ && consistent_) consistent_ = p.section.branches_consistent();
-        // Bᵀ s and Bᵀ k_s B with B = [1/L0 0 0; 0 b_i b_j], weighted by w·L0.
+        // Bᵀ s and Bᵀ k_s B with B = [1/L0 0 0; 0 b_i b_j], weighted by w·L0: the axial row
+        // of B meets ε0 alone, the bending row the end rotations alone (entry by entry).
         const double wL = p.at.weight * L0_;
-        const Eigen::Vector3d axial(1.0 / L0_, 0.0, 0.0);
-        const Eigen::Vector3d bending(0.0, p.curvature_per_theta_i, p.curvature_per_theta_j);
+        const double a = 1.0 / L0_, bi = p.curvature_per_theta_i, bj = p.curvature_per_theta_j;
         const Eigen::Matrix2d& ks = p.trial.tangent;
-        q += wL * (p.trial.N * axial + p.trial.M * bending);
-        const Eigen::Vector3d dN = ks(0, 0) * axial + ks(0, 1) * bending; // ∂N/∂e
-        const Eigen::Vector3d dM = ks(1, 0) * axial + ks(1, 1) * bending; // ∂M/∂e
-        k.noalias() += wL * (axial * dN.transpose() + bending * dM.transpose());
+        q[0] += wL * (p.trial.N * a);
+        q[1] += wL * (p.trial.M * bi);
+        q[2] += wL * (p.trial.M * bj);
+        const double dN[3] = {ks(0, 0) * a, ks(0, 1) * bi, ks(0, 1) * bj}; // ∂N/∂e
+        const double dM[3] = {ks(1, 0) * a, ks(1, 1) * bi, ks(1, 1) * bj}; // ∂M/∂e
+        for (int j = 0; j < 3; ++j) {
+            k(0, j) += wL * (a * dN[j]);
+            k(1, j) += wL * (bi * dM[j]);
+            k(2, j) += wL * (bj * dM[j]);
+        }
     }
 }
 
