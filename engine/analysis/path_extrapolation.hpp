@@ -18,7 +18,7 @@
 // iterations in the elastic ring's 200 steps, the converged states the same to round-off). Not
 // in members that may yield: there the law's return map bounds the trial's axial force, and the
 // quadratic through a kink of the path (a hinge forming) overshoots; measured on the variants
-// of the inelastic rings and the catenary beam, six that complete stopped early with it.
+// of the inelastic rings and the catenary beam, seven that complete stopped early with it.
 #pragma once
 
 #include <Eigen/Dense>
