@@ -15,7 +15,8 @@
 // came from them would steer the first correction's bending part off (the ring then needed a
 // second correction for that and a third for the membrane strain the second one made): the
 // first tangent takes the extrapolated axial forces in its elastic members instead (644 → 472
-// iterations in the elastic ring's 200 steps, the converged states the same to round-off). Not
+// iterations in the elastic ring's 200 steps, the converged states the same to round-off), where
+// they differ from the start's by a stretch below 1e-4 (StructuralSystem::element_stiffness). Not
 // in members that may yield: there the law's return map bounds the trial's axial force, and the
 // quadratic through a kink of the path (a hinge forming) overshoots; measured on the variants
 // of the inelastic rings and the catenary beam, seven that complete stopped early with it.

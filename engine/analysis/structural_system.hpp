@@ -45,8 +45,8 @@ public:
     // The tangent at the last evaluation, assembled on first use.
     const SparseMatrix& tangent() const;
     // The tangent of the last evaluation takes these axial forces (one per member) into the
-    // geometric stiffness of its elastic members instead of the evaluated ones
-    // (path_extrapolation.hpp says why, and why not those that may yield).
+    // geometric stiffness of its elastic members instead of the evaluated ones, where the two
+    // differ by a stretch below 1e-4 (path_extrapolation.hpp says why, and why not elsewhere).
     void take_axial_forces_in_tangent(const Eigen::VectorXd& forces);
     // The members' axial forces at the committed state.
     Eigen::VectorXd axial_forces() const;
@@ -91,7 +91,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<CorotationalBeam> elements_;
     std::vector<bool> distributed_; // per element: fibre sections along it (else hinges or elastic)
-    std::vector<bool> elastic_;     // per element: neither hinges nor fibre sections
+    std::vector<double> elastic_ea_; // per element: EA if neither hinges nor fibre sections, else 0
     std::vector<std::vector<int>> held_dofs_; // per element: its local DOFs that are supported or prescribed
     Foundation foundation_;
     FollowerPressure pressure_;

@@ -47,6 +47,7 @@ public:
     double trial_yield_advance() const { return law_->trial_yield_advance(); }
 
     BeamForces forces() const;
+    double trial_axial_force() const { return q_trial_[0]; }
     const BasicLaw& law() const { return *law_; }
     double initial_length() const { return L0_; }
     double rigid_rotation() const { return alpha_trial_; }
