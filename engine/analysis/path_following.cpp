@@ -48,7 +48,7 @@ double PathFollowing::control_value(const Eigen::VectorXd& u) const {
     return c.sign * u[dofs_per_node * c.node + c.dof];
 }
 
-StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule) const {
+StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule, bool with_sections) const {
     StepResult r;
     r.step = step;
     r.load_factor = lambda_;
@@ -59,7 +59,7 @@ StepResult PathFollowing::make_result(int step, int iterations, Acceptance rule)
     r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
-    system_.report(u_, lambda_ * system_.load(), r, report_sections_);
+    system_.report(u_, lambda_ * system_.load(), r, with_sections);
     if (model_.report.measure == ReportSpec::Measure::platen) {
         r.load = 0.0;
         for (std::size_t k = 0; k < r.springs.size(); ++k)
@@ -190,7 +190,6 @@ RoundOffFloor PathFollowing::round_off_floor() const {
 
 RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const RunControl& control) {
     RunSummary summary;
-    report_sections_ = control.report_sections;
     try {
         return run_steps(observers, control, summary);
     } catch (const std::bad_alloc&) {
@@ -233,7 +232,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
         initial_flexibility_ = f.dot(solver_.solve(f));
     }
-    if (!publish(make_result(0, 0, Acceptance::none))) return finish(0);
+    if (!publish(make_result(0, 0, Acceptance::none, control.report_sections))) return finish(0);
     path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
 
     double h = a.initial_increment;
@@ -372,7 +371,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         arc_length_ += previous_increment_.norm();
         path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
         const std::string crossing = check_penetration();
-        if (!publish(make_result(step_, outcome.iterations, outcome.rule))) return finish(step_ - 1);
+        if (!publish(make_result(step_, outcome.iterations, outcome.rule, control.report_sections))) return finish(step_ - 1);
         if (!crossing.empty()) {
             summary.status = RunStatus::penetration;
             summary.reason = crossing;

@@ -82,9 +82,9 @@ private:
     RoundOffFloor round_off_floor() const;
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;
-    bool report_sections_ = true; // RunControl::report_sections of the run
     double control_value(const Eigen::VectorXd& u) const;
-    StepResult make_result(int step, int iterations, Acceptance rule) const;
+    // with_sections: RunControl::report_sections of the run.
+    StepResult make_result(int step, int iterations, Acceptance rule, bool with_sections) const;
     // Whether the current stage's target is reached (within round-off of its increment).
     bool target_reached() const;
     // How far the current state lies past the stage's target, toward it positive (in load

@@ -72,10 +72,10 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
         const ElementSpec& e = model.elements[i];
         const Node& a = model.nodes[e.node_i];
         const Node& b = model.nodes[e.node_j];
-        distributed_.push_back(model.sections[e.section].plasticity == Plasticity::distributed);
         const SectionSpec& section = model.sections[e.section];
+        distributed_.push_back(section.plasticity == Plasticity::distributed);
         elastic_ea_.push_back(section.plasticity == Plasticity::none ? section.E * section.area : 0.0);
-        elements_.emplace_back(a, b, make_law(model.sections[e.section], std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
+        elements_.emplace_back(a, b, make_law(section, std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
         std::vector<int> held;
         for (int local = 0; local < 6; ++local)
             if (equation_[dofs_per_node * (local < 3 ? e.node_i : e.node_j) + local % 3] < 0) held.push_back(local);
