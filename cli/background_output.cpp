@@ -12,10 +12,26 @@ BackgroundOutput::BackgroundOutput(Sink sink, std::size_t capacity)
 BackgroundOutput::~BackgroundOutput() { finish(); }
 
 void BackgroundOutput::push(const StepResult& step) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return queue_.size() < capacity_ || failure_; });
-    if (failure_) throw std::runtime_error(failure_->message);
-    queue_.push_back(step);
+    std::unique_ptr<StepResult> copy;
+    {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [this] { return queue_.size() < capacity_ || failure_; });
+        if (failure_) throw std::runtime_error(failure_->message);
+        if (!spare_.empty()) {
+            copy = std::move(spare_.back()); // the most recently written: its memory is the warmest
+            spare_.pop_back();
+        }
+    }
+    // Copied outside the lock (the writer may go on meanwhile; only this thread adds steps,
+    // so the queue cannot have filled up in between).
+    if (copy)
+        *copy = step;
+    else
+        copy = std::make_unique<StepResult>(step);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        queue_.push_back(std::move(copy));
+    }
     changed_.notify_all();
 }
 
@@ -40,7 +56,7 @@ void BackgroundOutput::work() {
         if (queue_.empty()) return; // closing, and everything written
         // The step stays queued while it is written: the queue's length bounds the steps
         // held in memory, the one being written included.
-        const StepResult& step = queue_.front();
+        const StepResult& step = *queue_.front();
         lock.unlock();
         std::optional<OutputFailure> failed;
         try {
@@ -49,6 +65,7 @@ void BackgroundOutput::work() {
             failed = OutputFailure{step.step, e.what()};
         }
         lock.lock();
+        spare_.push_back(std::move(queue_.front()));
         queue_.pop_front();
         if (failed) {
             failure_ = std::move(failed);

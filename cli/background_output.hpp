@@ -4,6 +4,9 @@
 // a bounded queue holds those not yet written, so a slow disk holds the analysis back instead
 // of filling memory. The first step the sink cannot take (a full disk) ends the writing: later
 // steps are dropped, and the analysis hears of the failure at its next step.
+// A written step's storage is kept for the next copy: a step's vectors are then assigned into
+// room already there, not allocated by one thread and freed by the other (which costs both
+// threads the allocator's locks and makes the analysis's heap grow and shrink).
 #pragma once
 
 #include "analysis/step_result.hpp"
@@ -12,10 +15,12 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace plastica::cli {
 
@@ -46,7 +51,8 @@ private:
     std::size_t capacity_;
     mutable std::mutex mutex_;
     std::condition_variable changed_;
-    std::deque<StepResult> queue_;
+    std::deque<std::unique_ptr<StepResult>> queue_;   // the steps not yet written, the first being written
+    std::vector<std::unique_ptr<StepResult>> spare_;  // written steps, the last written last
     bool closing_ = false;
     std::optional<OutputFailure> failure_;
     std::thread worker_;

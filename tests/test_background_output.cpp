@@ -50,3 +50,31 @@ TEST_CASE("Background output stops at the first step the sink cannot take", "[cl
     CHECK(output.failure()->message == "disk full");
     CHECK(written == std::vector<int>{0, 1}); // nothing after the failed step
 }
+
+TEST_CASE("Background output hands over each step whole, also into the storage of a written one", "[cli][output]") {
+    // Steps of changing sizes: a copy into a reused step must leave nothing of the one before.
+    const auto varied = [](int k) {
+        StepResult r = step(k);
+        r.displacement.assign(static_cast<std::size_t>(k % 7), 0.5 * k);
+        r.elements.resize(static_cast<std::size_t>((k * 3) % 5));
+        for (ElementResult& e : r.elements) e.sections.assign(static_cast<std::size_t>(k % 3), SectionReport{0.0, 0.0, 1.0 * k, 0.0, 0.0});
+        return r;
+    };
+    std::vector<std::string> mismatches;
+    BackgroundOutput output(
+        [&](const StepResult& r) {
+            const StepResult expected = varied(r.step);
+            bool same = r.displacement == expected.displacement && r.elements.size() == expected.elements.size();
+            for (std::size_t e = 0; same && e < r.elements.size(); ++e) {
+                const std::vector<SectionReport>&got = r.elements[e].sections, &want = expected.elements[e].sections;
+                same = got.size() == want.size();
+                for (std::size_t k = 0; same && k < want.size(); ++k) same = got[k].curvature == want[k].curvature;
+            }
+            if (!same) mismatches.push_back("step " + std::to_string(r.step));
+        },
+        3);
+    for (int k = 0; k < 200; ++k) output.push(varied(k));
+    output.finish();
+    CHECK(mismatches.empty());
+    CHECK_FALSE(output.failure());
+}
