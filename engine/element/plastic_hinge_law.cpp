@@ -142,7 +142,7 @@ void PlasticHingeLaw::trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& 
     double previous_N = 0.0, previous_gap = 0.0;
     double below = -std::numeric_limits<double>::infinity(); // G(N) > N there
     double above = std::numeric_limits<double>::infinity();  // G(N) < N there
-    std::vector<int> working = frozen_ ? active_t_ : active_c_;
+    RowSet working = frozen_ ? active_t_ : active_c_;
     ReturnMap r;
     const double N_scale = sections_[0].axial_capacity_tension();
     for (int pass = 0; pass < 30; ++pass) {

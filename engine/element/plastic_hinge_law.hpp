@@ -81,6 +81,7 @@ private:
     // capacity rows only).
     enum Row { spring_i = 0, spring_j = 1, capacity_i = 2, capacity_j = 3, negative_i = 4, negative_j = 5,
                tension = 6, compression = 7, row_count = 8 };
+    static_assert(row_count <= max_yield_rows, "the return map holds its row sets in place");
     static bool capacity_row(int r) { return r >= capacity_i && r <= negative_j; }
     static int row_end(int r) { return (r - capacity_i) % 2; }
     static double row_sign(int r) { return r < negative_i ? 1.0 : -1.0; }
@@ -93,16 +94,16 @@ private:
     Eigen::Vector3d e_c_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d q_c_ = Eigen::Vector3d::Zero();
     std::array<double, 2> eta_c_{1.0, 1.0};              // pseudo-spring η for the next step
-    std::vector<int> active_c_;
-    std::vector<int> loading_c_; // rows that flowed in the last step: the predictor's tangent
+    RowSet active_c_;
+    RowSet loading_c_; // rows that flowed in the last step: the predictor's tangent
     std::array<HingeReport, 2> committed_end_{};
 
     // Trial state.
     Eigen::Vector3d e_t_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d q_t_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d flow_t_ = Eigen::Vector3d::Zero();
-    std::vector<int> active_t_;
-    std::vector<double> gamma_t_;
+    RowSet active_t_;
+    RowValues gamma_t_;
     double curvature_t_ = 0.0; // Σγ·(−M_p″)/M_p of active capacity rows
     bool frozen_ = false;
     bool unloading_predictor_ = false; // until the next commit

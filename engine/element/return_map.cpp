@@ -1,14 +1,14 @@
 #include "element/return_map.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace plastica {
 
 namespace {
 
-// At most eight rows (element/plastic_hinge_law.hpp): fixed-capacity storage, no allocation.
-constexpr int max_rows = 8;
+constexpr int max_rows = max_yield_rows; // fixed-capacity storage, no allocation
 using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, max_rows, max_rows>;
 using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max_rows, 1>;
 using RowBlock = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor, max_rows, 3>;
@@ -17,7 +17,7 @@ constexpr double tolerance = 1e-12; // in the rows' units (capacity rows are sca
 
 // Multipliers of the rows in `set` with those rows at equality.
 bool solve_active(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial, const std::vector<YieldRow>& rows,
-                  const std::vector<int>& set, SmallVector& gamma) {
+                  const RowSet& set, SmallVector& gamma) {
     const int n = static_cast<int>(set.size());
     SmallMatrix M(n, n);
     SmallVector rhs(n);
@@ -35,8 +35,7 @@ bool solve_active(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial, cons
 
 } // namespace
 
-Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vector<YieldRow>& rows,
-                                      const std::vector<int>& active) {
+Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vector<YieldRow>& rows, const RowSet& active) {
     if (active.empty()) return K;
     const int n = static_cast<int>(active.size());
     RowBlock AK(n, 3);
@@ -50,16 +49,16 @@ Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vecto
 }
 
 ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
-                     const std::vector<YieldRow>& rows, std::vector<int> working, bool frozen) {
+                     const std::vector<YieldRow>& rows, const RowSet& working, bool frozen) {
     // Lawson and Hanson's active-set method for min ½γᵀMγ − γᵀd, γ ≥ 0 (finite, no cycling),
     // with d_k = a_k·q_trial − c_k. Only M's rows of the active set are ever formed; the
     // violation of an inactive row is read from q = q_trial − K Σγ a.
     ReturnMap out;
     const int rows_count = static_cast<int>(rows.size());
     if (rows_count > max_rows) return out; // beyond the fixed storage: reported as no solution
-    std::vector<double> gamma(rows.size(), 0.0);
-    std::vector<int> passive;
-    auto state = [&](const std::vector<double>& g) {
+    std::array<double, max_rows> gamma{};
+    RowSet passive;
+    auto state = [&](const std::array<double, max_rows>& g) {
         Eigen::Vector3d flow = Eigen::Vector3d::Zero();
         for (int k : passive) flow += g[k] * rows[k].a;
         return flow;
@@ -116,7 +115,7 @@ ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
             for (std::size_t i = 0; i < passive.size(); ++i)
                 if (z[i] <= 0.0) alpha = std::min(alpha, gamma[passive[i]] / (gamma[passive[i]] - z[i]));
             for (std::size_t i = 0; i < passive.size(); ++i) gamma[passive[i]] += alpha * (z[i] - gamma[passive[i]]);
-            std::vector<int> kept;
+            RowSet kept;
             for (int k : passive) {
                 if (gamma[k] > tolerance * 1e-3) kept.push_back(k);
                 else gamma[k] = 0.0;
@@ -124,7 +123,6 @@ ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
             passive.swap(kept);
         }
     }
-    (void)working;
     return out;
 }
 

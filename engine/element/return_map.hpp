@@ -8,9 +8,16 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <boost/container/static_vector.hpp>
 #include <vector>
 
 namespace plastica {
+
+// Sets of rows and their multipliers, at most eight rows (element/plastic_hinge_law.hpp): held in
+// place, since the return map runs at every evaluation of a hinged member.
+constexpr int max_yield_rows = 8;
+using RowSet = boost::container::static_vector<int, max_yield_rows>;
+using RowValues = boost::container::static_vector<double, max_yield_rows>;
 
 struct YieldRow {
     Eigen::Vector3d a = Eigen::Vector3d::Zero();
@@ -23,17 +30,16 @@ struct ReturnMap {
     Eigen::Vector3d q = Eigen::Vector3d::Zero();
     Eigen::Vector3d flow = Eigen::Vector3d::Zero(); // Σ γ_k a_k
     Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();
-    std::vector<int> active;       // rows with γ > 0 (or the frozen set)
-    std::vector<double> multipliers;
+    RowSet active;                 // rows with γ > 0 (or the frozen set)
+    RowValues multipliers;
     bool consistent = true;        // with a frozen set: every γ ≥ 0 and every other row holds
 };
 
 // K − K Aₐᵀ (Aₐ K Aₐᵀ + H)⁻¹ Aₐ K for the given active rows.
-Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vector<YieldRow>& rows,
-                                      const std::vector<int>& active);
+Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vector<YieldRow>& rows, const RowSet& active);
 
 // working: rows to start from (warm start) or, with frozen, the rows kept active.
 ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
-                     const std::vector<YieldRow>& rows, std::vector<int> working, bool frozen);
+                     const std::vector<YieldRow>& rows, const RowSet& working, bool frozen);
 
 } // namespace plastica
