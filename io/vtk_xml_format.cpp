@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <charconv>
 #include <stdexcept>
 
 namespace plastica {
@@ -18,7 +19,10 @@ constexpr std::size_t block_size = 32768; // vtkXMLWriter's default
 // compressed array) followed by its bytes; the XML refers to it by its offset in the block.
 class Appended {
 public:
-    explicit Appended(Compression compression) : compression_(compression) {}
+    // `bytes`: the arrays' raw size, which an uncompressed block holds with a header each.
+    Appended(Compression compression, std::size_t bytes) : compression_(compression) {
+        if (compression_ == Compression::none) block_.reserve(bytes + 64 * sizeof(std::uint64_t));
+    }
 
     std::size_t add(const void* data, std::size_t bytes) {
         const std::size_t offset = block_.size();
@@ -74,25 +78,39 @@ private:
 };
 
 
+// The XML is appended piece by piece: a step's file has some forty tags, and building each from
+// temporary strings cost the writer's thread more allocations than the rest of the step.
 struct Writer {
     std::string xml;
     Appended appended;
 
-    explicit Writer(Compression c) : appended(c) { xml.reserve(8192); }
+    explicit Writer(Compression c, std::size_t array_bytes) : appended(c, array_bytes) { xml.reserve(8192); }
+
+    void piece(const char* text) { xml += text; }
+    void piece(const std::string& text) { xml += text; }
+    void piece(std::size_t number) {
+        char digits[24];
+        xml.append(digits, std::to_chars(digits, digits + sizeof digits, number).ptr);
+    }
+    template <class... Pieces>
+    void put(const Pieces&... pieces) {
+        (piece(pieces), ...);
+    }
+    void name(const std::string& text) { append_xml_escaped(xml, text); }
 
     void data_array(const XmlArray& array, const char* indent, bool tuples_attribute) {
-        const std::string name = xml_escaped(array.name);
-        std::string type;
-        std::size_t offset = 0;
         if (const auto* text = std::get_if<std::vector<std::string>>(&array.values)) {
             // Strings: each value's characters and a terminating NUL, in one block.
             std::string bytes;
             for (const std::string& s : *text) bytes.append(s).push_back('\0');
-            offset = appended.add(bytes.data(), bytes.size());
-            xml += std::string(indent) + "<Array type=\"String\" Name=\"" + name + "\" NumberOfTuples=\"" +
-                   std::to_string(text->size()) + "\" format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+            const std::size_t offset = appended.add(bytes.data(), bytes.size());
+            put(indent, "<Array type=\"String\" Name=\"");
+            name(array.name);
+            put("\" NumberOfTuples=\"", text->size(), "\" format=\"appended\" offset=\"", offset, "\"/>\n");
             return;
         }
+        const char* type = nullptr;
+        std::size_t offset = 0;
         if (const auto* real = std::get_if<std::vector<double>>(&array.values)) {
             type = "Float64";
             offset = appended.add(real->data(), real->size() * sizeof(double));
@@ -101,37 +119,42 @@ struct Writer {
             type = "Int32";
             offset = appended.add(integer.data(), integer.size() * sizeof(std::int32_t));
         }
-        xml += std::string(indent) + "<DataArray type=\"" + type + "\" Name=\"" + name + "\"";
-        if (array.components != 1) xml += " NumberOfComponents=\"" + std::to_string(array.components) + "\"";
-        if (tuples_attribute) xml += " NumberOfTuples=\"" + std::to_string(array.tuples()) + "\"";
-        xml += " format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+        put(indent, "<DataArray type=\"", type, "\" Name=\"");
+        name(array.name);
+        put("\"");
+        if (array.components != 1) put(" NumberOfComponents=\"", static_cast<std::size_t>(array.components), "\"");
+        if (tuples_attribute) put(" NumberOfTuples=\"", array.tuples(), "\"");
+        put(" format=\"appended\" offset=\"", offset, "\"/>\n");
     }
 
     void attribute_data(const std::vector<XmlArray>& arrays, const char* tag, const std::string& vectors) {
-        xml += std::string("      <") + tag;
-        if (!vectors.empty()) xml += " Vectors=\"" + xml_escaped(vectors) + "\"";
-        xml += ">\n";
+        put("      <", tag);
+        if (!vectors.empty()) {
+            put(" Vectors=\"");
+            name(vectors);
+            put("\"");
+        }
+        put(">\n");
         for (const XmlArray& a : arrays) data_array(a, "        ", false);
-        xml += std::string("      </") + tag + ">\n";
+        put("      </", tag, ">\n");
     }
 
     void header(const char* type, Compression compression, const XmlDataset& data) {
-        xml += std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"") + type +
-               "\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
-        if (compression == Compression::lz4) xml += " compressor=\"vtkLZ4DataCompressor\"";
-        if (compression == Compression::zlib) xml += " compressor=\"vtkZLibDataCompressor\"";
-        xml += std::string(">\n  <") + type + ">\n";
+        put("<?xml version=\"1.0\"?>\n<VTKFile type=\"", type, "\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\"");
+        if (compression == Compression::lz4) put(" compressor=\"vtkLZ4DataCompressor\"");
+        if (compression == Compression::zlib) put(" compressor=\"vtkZLibDataCompressor\"");
+        put(">\n  <", type, ">\n");
         if (!data.field_data.empty()) {
-            xml += "    <FieldData>\n";
+            put("    <FieldData>\n");
             for (const XmlArray& a : data.field_data) data_array(a, "      ", true);
-            xml += "    </FieldData>\n";
+            put("    </FieldData>\n");
         }
     }
 
     void points(const XmlDataset& data) {
-        xml += "      <Points>\n";
+        put("      <Points>\n");
         data_array({"Points", 3, data.points}, "        ", false);
-        xml += "      </Points>\n";
+        put("      </Points>\n");
     }
 
     // A cell block: connectivity and offsets as Int64 (and the cell types as UInt8 in a grid).
@@ -141,21 +164,23 @@ struct Writer {
         for (std::size_t c = 0; c < count; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * static_cast<std::size_t>(points_per_cell));
         const std::size_t at_connectivity = appended.add(connectivity.data(), connectivity.size() * sizeof(std::int64_t));
         const std::size_t at_offsets = appended.add(offsets.data(), offsets.size() * sizeof(std::int64_t));
-        xml += std::string("      <") + tag + ">\n"
-               "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"" + std::to_string(at_connectivity) + "\"/>\n"
-               "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"" + std::to_string(at_offsets) + "\"/>\n";
+        put("      <", tag, ">\n",
+            "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"", at_connectivity, "\"/>\n",
+            "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"", at_offsets, "\"/>\n");
         if (with_types) {
             const std::vector<std::uint8_t> types(count, type);
             const std::size_t at_types = appended.add(types.data(), types.size());
-            xml += "        <DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"" + std::to_string(at_types) + "\"/>\n";
+            put("        <DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"", at_types, "\"/>\n");
         }
-        xml += std::string("      </") + tag + ">\n";
+        put("      </", tag, ">\n");
     }
 
     std::string finish(const char* type) {
-        xml += std::string("    </Piece>\n  </") + type + ">\n  <AppendedData encoding=\"raw\">\n   _";
+        static const char tail[] = "\n  </AppendedData>\n</VTKFile>\n";
+        put("    </Piece>\n  </", type, ">\n  <AppendedData encoding=\"raw\">\n   _");
+        xml.reserve(xml.size() + appended.bytes().size() + sizeof tail);
         xml += appended.bytes();
-        xml += "\n  </AppendedData>\n</VTKFile>\n";
+        xml += tail;
         return std::move(xml);
     }
 };
@@ -169,14 +194,22 @@ std::vector<std::int64_t> flat(const std::vector<std::array<std::int64_t, 2>>& l
 
 constexpr std::uint8_t vtk_line = 3; // VTK_LINE
 
+// About the arrays' raw bytes, the appended block less its headers (a string counts as its
+// object's size), so that the block is allocated once.
+std::size_t raw_bytes(const XmlDataset& data) {
+    std::size_t bytes = (data.points.size() + 2 * data.vertices.size() + 3 * data.lines.size()) * sizeof(double) + data.lines.size();
+    for (const std::vector<XmlArray>* arrays : {&data.point_data, &data.cell_data, &data.field_data})
+        for (const XmlArray& a : *arrays) bytes += std::visit([](const auto& v) { return v.size() * sizeof v.front(); }, a.values);
+    return bytes;
+}
+
 } // namespace
 
 std::string unstructured_grid_xml(const XmlDataset& data, Compression compression) {
     if (!data.vertices.empty()) throw std::logic_error("unstructured_grid_xml: a grid of this series holds line cells only");
-    Writer w(compression);
+    Writer w(compression, raw_bytes(data));
     w.header("UnstructuredGrid", compression, data);
-    w.xml += "    <Piece NumberOfPoints=\"" + std::to_string(data.point_count()) + "\" NumberOfCells=\"" +
-             std::to_string(data.lines.size()) + "\">\n";
+    w.put("    <Piece NumberOfPoints=\"", data.point_count(), "\" NumberOfCells=\"", data.lines.size(), "\">\n");
     w.attribute_data(data.point_data, "PointData", data.active_vectors);
     w.attribute_data(data.cell_data, "CellData", "");
     w.points(data);
@@ -185,11 +218,10 @@ std::string unstructured_grid_xml(const XmlDataset& data, Compression compressio
 }
 
 std::string poly_data_xml(const XmlDataset& data, Compression compression) {
-    Writer w(compression);
+    Writer w(compression, raw_bytes(data));
     w.header("PolyData", compression, data);
-    w.xml += "    <Piece NumberOfPoints=\"" + std::to_string(data.point_count()) + "\" NumberOfVerts=\"" +
-             std::to_string(data.vertices.size()) + "\" NumberOfLines=\"" + std::to_string(data.lines.size()) +
-             "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+    w.put("    <Piece NumberOfPoints=\"", data.point_count(), "\" NumberOfVerts=\"", data.vertices.size(), "\" NumberOfLines=\"",
+          data.lines.size(), "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n");
     w.attribute_data(data.point_data, "PointData", data.active_vectors);
     w.attribute_data(data.cell_data, "CellData", ""); // vertices' values first, then the lines'
     w.points(data);

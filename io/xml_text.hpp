@@ -5,9 +5,8 @@
 
 namespace plastica {
 
-inline std::string xml_escaped(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
+// Appends the escaped text to `out`.
+inline void append_xml_escaped(std::string& out, const std::string& text) {
     for (char c : text) {
         switch (c) {
         case '&': out += "&amp;"; break;
@@ -18,6 +17,12 @@ inline std::string xml_escaped(const std::string& text) {
         default: out += c;
         }
     }
+}
+
+inline std::string xml_escaped(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    append_xml_escaped(out, text);
     return out;
 }
 
