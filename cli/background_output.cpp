@@ -1,13 +1,15 @@
 #include "background_output.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <stdexcept>
 #include <utility>
 
 namespace plastica::cli {
 
-BackgroundOutput::BackgroundOutput(Sink sink, std::size_t capacity)
-    : sink_(std::move(sink)), capacity_(capacity), worker_([this] { work(); }) {}
+BackgroundOutput::BackgroundOutput(Sink sink, std::size_t capacity, std::size_t batch, std::chrono::milliseconds latency)
+    : sink_(std::move(sink)), capacity_(capacity), batch_(std::min(batch, capacity)), latency_(latency),
+      worker_([this] { work(); }) {}
 
 BackgroundOutput::~BackgroundOutput() { finish(); }
 
@@ -28,11 +30,13 @@ void BackgroundOutput::push(const StepResult& step) {
         *copy = step;
     else
         copy = std::make_unique<StepResult>(step);
+    bool wake = false;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         queue_.push_back(std::move(copy));
+        wake = queue_.size() >= batch_;
     }
-    changed_.notify_all();
+    if (wake) changed_.notify_all();
 }
 
 void BackgroundOutput::finish() {
@@ -52,7 +56,7 @@ std::optional<OutputFailure> BackgroundOutput::failure() const {
 void BackgroundOutput::work() {
     for (;;) {
         std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
+        while (queue_.empty() && !closing_) changed_.wait_for(lock, latency_);
         if (queue_.empty()) return; // closing, and everything written
         // The step stays queued while it is written: the queue's length bounds the steps
         // held in memory, the one being written included.

@@ -7,10 +7,15 @@
 // A written step's storage is kept for the next copy: a step's vectors are then assigned into
 // room already there, not allocated by one thread and freed by the other (which costs both
 // threads the allocator's locks and makes the analysis's heap grow and shrink).
+// Steps are handed over in batches: waking the writer costs the analysis a system call and
+// the writer a switch (tens of µs on a virtual machine), more than a step of a small model
+// takes to solve. The writer is woken when `batch` steps wait; otherwise it looks for steps
+// every `latency`, so that no step waits longer than that to be written.
 #pragma once
 
 #include "analysis/step_result.hpp"
 
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -32,7 +37,8 @@ struct OutputFailure {
 class BackgroundOutput {
 public:
     using Sink = std::function<void(const StepResult&)>;
-    explicit BackgroundOutput(Sink sink, std::size_t capacity = 64);
+    explicit BackgroundOutput(Sink sink, std::size_t capacity = 64, std::size_t batch = 8,
+                              std::chrono::milliseconds latency = std::chrono::milliseconds(20));
     ~BackgroundOutput();
     BackgroundOutput(const BackgroundOutput&) = delete;
     BackgroundOutput& operator=(const BackgroundOutput&) = delete;
@@ -49,6 +55,8 @@ private:
 
     Sink sink_;
     std::size_t capacity_;
+    std::size_t batch_;
+    std::chrono::milliseconds latency_;
     mutable std::mutex mutex_;
     std::condition_variable changed_;
     std::deque<std::unique_ptr<StepResult>> queue_;   // the steps not yet written, the first being written
