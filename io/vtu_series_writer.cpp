@@ -354,17 +354,34 @@ void VtuSeriesWriter::write_base() {
     has_base_file_ = true;
 }
 
+namespace {
+// Writes all of `text` at `offset`; false (errno set) if the file takes less.
+bool write_at(int fd, const std::string& text, long offset) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, offset + static_cast<long>(done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            if (n == 0) errno = ENOSPC;
+            return false;
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    return true;
+}
+} // namespace
+
 void VtuSeriesWriter::append_to_pvd(double time, const std::string& file) {
-    static const char closing[] = "  </Collection>\n</VTKFile>\n";
+    static const std::string closing = "  </Collection>\n</VTKFile>\n";
     if (!pvd_) {
-        // Created whole through a temporary file and a rename, then kept open.
+        // Created whole through a temporary file and a rename, then kept open (the stream only
+        // holds the descriptor: entries go in with one positioned write each, no read-back).
         write_file_atomically(pvd_path_, "<?xml version=\"1.0\"?>\n"
                                          "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-                                         "  <Collection>\n" + std::string(closing));
+                                         "  <Collection>\n" + closing);
         pvd_.reset(std::fopen(pvd_path_.c_str(), "r+b"));
         if (!pvd_) throw std::runtime_error("cannot open " + pvd_path_);
-        std::fseek(pvd_.get(), 0, SEEK_END);
-        pvd_tail_ = std::ftell(pvd_.get()) - static_cast<long>(sizeof closing - 1);
+        pvd_tail_ = static_cast<long>(std::filesystem::file_size(pvd_path_) - closing.size());
     }
     std::ostringstream x;
     x.precision(17);
@@ -373,17 +390,12 @@ void VtuSeriesWriter::append_to_pvd(double time, const std::string& file) {
     const std::string entry = x.str();
     // One write of the new entries and the closing tags over the old closing tags: the file
     // is a complete collection before and after it.
-    const std::string tail = entry + closing;
-    if (std::fseek(pvd_.get(), pvd_tail_, SEEK_SET) != 0 ||
-        std::fwrite(tail.data(), 1, tail.size(), pvd_.get()) != tail.size() || std::fflush(pvd_.get()) != 0) {
+    const int fd = ::fileno(pvd_.get());
+    if (!write_at(fd, entry + closing, pvd_tail_)) {
         const std::string reason = std::strerror(errno);
         // A full disk: put the closing tags back where they were (those bytes are the file's
         // already) and cut off whatever part of the entry went out.
-        std::clearerr(pvd_.get());
-        std::fseek(pvd_.get(), pvd_tail_, SEEK_SET);
-        std::fwrite(closing, 1, sizeof closing - 1, pvd_.get());
-        std::fflush(pvd_.get());
-        if (::ftruncate(::fileno(pvd_.get()), pvd_tail_ + static_cast<long>(sizeof closing - 1)) != 0) {
+        if (!write_at(fd, closing, pvd_tail_) || ::ftruncate(fd, pvd_tail_ + static_cast<long>(closing.size())) != 0) {
             // nothing more to be done: the error below says what happened
         }
         throw std::runtime_error("cannot write " + pvd_path_ + ": " + reason);
