@@ -3,7 +3,7 @@
 # names given as arguments are added (`make fuzz` adds clang). It never removes a package:
 # apt-get runs with --no-remove, so a conflict stops the install with an explanation instead.
 set -euo pipefail
-packages=(cmake g++ make pkg-config libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libboost-program-options-dev
+packages=(cmake g++ make pkg-config libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libboost-program-options-dev zlib1g-dev liblz4-dev
           libvtk9-dev libpng-dev libosmesa6-dev libglew-dev fonts-dejavu-core catch2 libbenchmark-dev ffmpeg parallel "$@")
 missing=()
 for p in "${packages[@]}"; do
