@@ -5,8 +5,8 @@
 // of filling memory. The first step the sink cannot take (a full disk) ends the writing: later
 // steps are dropped, and the analysis hears of the failure at its next step.
 // A written step's storage is kept for the next copy: a step's vectors are then assigned into
-// room already there, not allocated by one thread and freed by the other (which costs both
-// threads the allocator's locks and makes the analysis's heap grow and shrink).
+// room already there, not allocated by one thread and freed by the other (which had cost the
+// analysis thread a tenth of its samples in the allocator).
 // Steps are handed over in batches: waking the writer costs the analysis a system call and
 // the writer a switch (tens of µs on a virtual machine), more than a step of a small model
 // takes to solve. The writer is woken when `batch` steps wait; otherwise it looks for steps

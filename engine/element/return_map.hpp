@@ -38,7 +38,7 @@ struct ReturnMap {
 // K − K Aₐᵀ (Aₐ K Aₐᵀ + H)⁻¹ Aₐ K for the given active rows.
 Eigen::Matrix3d elastoplastic_tangent(const Eigen::Matrix3d& K, const std::vector<YieldRow>& rows, const RowSet& active);
 
-// working: rows to start from (warm start) or, with frozen, the rows kept active.
+// working: with frozen, the rows kept active (the method otherwise starts from no active row).
 ReturnMap return_map(const Eigen::Matrix3d& K, const Eigen::Vector3d& q_trial,
                      const std::vector<YieldRow>& rows, const RowSet& working, bool frozen);
 
