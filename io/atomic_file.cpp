@@ -20,14 +20,28 @@ void rename_into_place(const std::string& temporary, const std::string& path) {
     if (ec) throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
 }
 
-void write_all(int fd, const char* data, std::size_t size, const std::string& path) {
-    while (size > 0) {
-        const ssize_t n = ::write(fd, data, size);
+namespace {
+// Calls write_some(done) until `size` bytes are written: each call returns what it wrote, or −1.
+template <class WriteSome>
+void write_everything(std::size_t size, const std::string& path, WriteSome write_some) {
+    std::size_t done = 0;
+    while (done < size) {
+        const ssize_t n = write_some(done);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(n < 0 ? errno : EIO));
-        data += n;
-        size -= static_cast<std::size_t>(n);
+        done += static_cast<std::size_t>(n);
     }
+}
+} // namespace
+
+void write_all(int fd, const char* data, std::size_t size, const std::string& path) {
+    write_everything(size, path, [&](std::size_t done) { return ::write(fd, data + done, size - done); });
+}
+
+void write_all_at(int fd, const std::string& text, long offset, const std::string& path) {
+    write_everything(text.size(), path, [&](std::size_t done) {
+        return ::pwrite(fd, text.data() + done, text.size() - done, offset + static_cast<long>(done));
+    });
 }
 
 namespace {

@@ -16,6 +16,8 @@ void write_file_atomically(const std::string& path, const std::string& contents)
 void write_file_in_place(const std::string& path, const std::string& contents);
 // Writes all of it to an open descriptor, or throws naming the path and the reason.
 void write_all(int fd, const char* data, std::size_t size, const std::string& path);
+// The same at a position of the file (pwrite), without moving its offset.
+void write_all_at(int fd, const std::string& text, long offset, const std::string& path);
 std::string temporary_name(const std::string& path);
 void rename_into_place(const std::string& temporary, const std::string& path);
 

@@ -6,8 +6,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -354,23 +352,6 @@ void VtuSeriesWriter::write_base() {
     has_base_file_ = true;
 }
 
-namespace {
-// Writes all of `text` at `offset`; false (errno set) if the file takes less.
-bool write_at(int fd, const std::string& text, long offset) {
-    std::size_t done = 0;
-    while (done < text.size()) {
-        const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, offset + static_cast<long>(done));
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            if (n == 0) errno = ENOSPC;
-            return false;
-        }
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
-}
-} // namespace
-
 void VtuSeriesWriter::append_to_pvd(double time, const std::string& file) {
     static const std::string closing = "  </Collection>\n</VTKFile>\n";
     if (!pvd_) {
@@ -391,14 +372,19 @@ void VtuSeriesWriter::append_to_pvd(double time, const std::string& file) {
     // One write of the new entries and the closing tags over the old closing tags: the file
     // is a complete collection before and after it.
     const int fd = ::fileno(pvd_.get());
-    if (!write_at(fd, entry + closing, pvd_tail_)) {
-        const std::string reason = std::strerror(errno);
+    try {
+        write_all_at(fd, entry + closing, pvd_tail_, pvd_path_);
+    } catch (...) {
         // A full disk: put the closing tags back where they were (those bytes are the file's
-        // already) and cut off whatever part of the entry went out.
-        if (!write_at(fd, closing, pvd_tail_) || ::ftruncate(fd, pvd_tail_ + static_cast<long>(closing.size())) != 0) {
-            // nothing more to be done: the error below says what happened
+        // already) and cut off whatever part of the entry went out; the error says what happened.
+        try {
+            write_all_at(fd, closing, pvd_tail_, pvd_path_);
+        } catch (...) {
         }
-        throw std::runtime_error("cannot write " + pvd_path_ + ": " + reason);
+        if (::ftruncate(fd, pvd_tail_ + static_cast<long>(closing.size())) != 0) {
+            // nothing more to be done
+        }
+        throw;
     }
     pvd_tail_ += static_cast<long>(entry.size());
 }
