@@ -26,6 +26,7 @@ public:
         K_.setFromTriplets(all.begin(), all.end());
     }
     bool evaluate(int, bool) override {
+        ++evaluations;
         Eigen::MatrixXd dense;
         Eigen::VectorXd f;
         internal(f, dense);
@@ -47,6 +48,7 @@ public:
 
     Eigen::VectorXd x_;
     double lambda_ = 0.0;
+    int evaluations = 0;
 
 private:
     Eigen::VectorXd load_, residual_;
@@ -128,6 +130,37 @@ TEST_CASE("Newton with arc length passes the limit point of a two-DOF snap-throu
     CHECK(negative_pivot);
     CHECK(peak == Approx(SnapThrough::f(v_limit)).epsilon(2e-3)); // steps of 0.05 sample the peak
     CHECK(problem.x_[0] >= 2.5);
+}
+
+TEST_CASE("A state whose own correction is far inside the tolerance is accepted without it, on the same path", "[newton]") {
+    // The snap-through spring traced by displacement control up its rising branch, once taking
+    // every correction and once accepting a state whose next correction is within 1e-2 of the
+    // displacement tolerance: the paths agree to 1e-10 of the step, and the second saves the
+    // evaluation after that correction wherever Newton lands on the path to round-off.
+    SnapThrough taken, untaken;
+    LinearSolver solver;
+    NewtonSettings settings;
+    settings.residual_tolerance = 1e-6;
+    int saved = 0;
+    for (int step = 0; step < 10; ++step) {
+        DisplacementControl c1(1, 0.02), c2(1, 0.02);
+        settings.accept_before_correction = false;
+        const NewtonResult a = solve_increment(taken, c1, settings, solver);
+        const int evaluations = untaken.evaluations;
+        settings.accept_before_correction = true;
+        const NewtonResult b = solve_increment(untaken, c2, settings, solver);
+        REQUIRE(a.converged());
+        REQUIRE(b.converged());
+        CHECK(b.iterations == a.iterations); // the same corrections computed
+        CHECK((untaken.x_ - taken.x_).norm() <= 1e-10 * a.increment.norm());
+        CHECK(std::abs(untaken.lambda_ - taken.lambda_) <= 1e-10 * std::abs(taken.lambda_));
+        CHECK(untaken.lambda_ == Approx(SnapThrough::f(untaken.x_[0])).margin(1e-6));
+        if (untaken.evaluations - evaluations == b.iterations) ++saved; // one per correction taken, none after the last
+        // Keep the two on the same start, so that each step compares one rule against the other.
+        untaken.x_ = taken.x_;
+        untaken.lambda_ = taken.lambda_;
+    }
+    CHECK(saved >= 8); // every step here lands on the path to round-off
 }
 
 TEST_CASE("Load control past the limit point snaps to the far stable branch or fails, never stops on the unstable one", "[newton]") {

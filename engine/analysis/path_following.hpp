@@ -83,8 +83,9 @@ private:
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;
     double control_value(const Eigen::VectorXd& u) const;
-    // with_sections: RunControl::report_sections of the run.
-    StepResult make_result(int step, int iterations, Acceptance rule, bool with_sections) const;
+    // The converged state as a step's result, in storage kept from step to step (the
+    // observers copy what they keep). with_sections: RunControl::report_sections of the run.
+    const StepResult& make_result(int step, int iterations, Acceptance rule, bool with_sections);
     // Whether the current stage's target is reached (within round-off of its increment).
     bool target_reached() const;
     // How far the current state lies past the stage's target, toward it positive (in load
@@ -122,6 +123,7 @@ private:
     std::string limit_evidence_;
     std::vector<IterationTrace> trace_;
     PathExtrapolation path_; // the last converged states, for the predictor
+    StepResult result_;      // the step being published (make_result)
 };
 
 } // namespace plastica

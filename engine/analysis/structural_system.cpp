@@ -81,6 +81,9 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
             if (equation_[dofs_per_node * (local < 3 ? e.node_i : e.node_j) + local % 3] < 0) held.push_back(local);
         held_dofs_.push_back(std::move(held));
     }
+    dof_of_equation_.assign(static_cast<std::size_t>(free_count_), 0);
+    for (int i = 0; i < dof_count(); ++i)
+        if (equation_[i] >= 0) dof_of_equation_[static_cast<std::size_t>(equation_[i])] = i;
     internal_ = Eigen::VectorXd::Zero(dof_count());
     coupling_ = Eigen::VectorXd::Zero(free_count_);
 }
@@ -207,6 +210,10 @@ bool StructuralSystem::tangent_finite() const {
     return tangent_finite_;
 }
 
+bool StructuralSystem::all_members_elastic() const {
+    return std::all_of(elastic_ea_.begin(), elastic_ea_.end(), [](double ea) { return ea > 0.0; });
+}
+
 bool StructuralSystem::hinge_states_consistent() const {
     for (const CorotationalBeam& e : elements_)
         if (!e.law().states_consistent()) return false;
@@ -254,13 +261,11 @@ Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {
 
 void StructuralSystem::gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const {
     free.resize(free_count_);
-    for (int i = 0; i < dof_count(); ++i)
-        if (equation_[i] >= 0) free[equation_[i]] = full[i];
+    for (int k = 0; k < free_count_; ++k) free[k] = full[dof_of_equation_[static_cast<std::size_t>(k)]];
 }
 
 void StructuralSystem::scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const {
-    for (int i = 0; i < dof_count(); ++i)
-        if (equation_[i] >= 0) full[i] = free[equation_[i]];
+    for (int k = 0; k < free_count_; ++k) full[dof_of_equation_[static_cast<std::size_t>(k)]] = free[k];
 }
 
 void StructuralSystem::predict_unloading() {
@@ -298,6 +303,8 @@ void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& e
         r.forces = elements_[e].forces();
         r.hinged = elements_[e].law().has_hinges();
         if (with_sections) r.sections = elements_[e].law().sections();
+        else r.sections.clear(); // out may hold an earlier step
+        for (int end = 0; end < 2; ++end) r.hinge[end] = {};
         for (int end = 0; end < 2 && r.hinged; ++end) {
             r.hinge[end] = elements_[e].law().hinge(end);
             if (r.hinge[end].state != HingeState::elastic) ++out.hinge_count;

@@ -62,6 +62,10 @@ public:
     bool on_moving_base(std::size_t spring) const { return on_moving_base_[spring]; }
     // Whether every element's hinge states (frozen or not) agree with the evaluated state.
     bool hinge_states_consistent() const;
+    // No member has hinges or fibre sections: every law is smooth.
+    bool all_members_elastic() const;
+    // The reference load moves with the structure (follower pressure); else it is fixed.
+    bool load_follows_deformation() const { return !pressure_.empty(); }
     // The largest advance of a section into its yielding range over the trial step, among
     // laws that integrate their stiffness explicitly (BasicLaw::trial_yield_advance).
     double trial_yield_advance() const;
@@ -99,6 +103,7 @@ private:
     Eigen::VectorXd load_;
     int free_count_ = 0;
     std::vector<int> equation_;
+    std::vector<int> dof_of_equation_; // the inverse of equation_ on the free DOFs
     // Assembled on demand from the elements' and springs' trial states (tangent()).
     void assemble_tangent() const;
     void element_stiffness(std::size_t e, Matrix6& k) const; // the member's tangent and its pressure's

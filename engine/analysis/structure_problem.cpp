@@ -19,7 +19,7 @@ bool StructureProblem::evaluate(int iteration, bool release) {
     system_.set_contact_undecided_force(load_direction_.size() > 0 ? contact_band_ * force_scale(reference_level_) : 0.0);
     if (!system_.evaluate(u_, ubar_, lambda_, contact_frozen, hinges_frozen, fibres_frozen)) return false;
     if (iteration == 0 && predicted_axial_forces_) system_.take_axial_forces_in_tangent(*predicted_axial_forces_);
-    system_.gather(system_.load(), load_);
+    if (load_.size() == 0 || system_.load_follows_deformation()) system_.gather(system_.load(), load_);
     system_.gather(system_.internal_force(), internal_);
     load_direction_ = load_ - system_.coupling();
     residual_ = lambda_ * load_ - internal_;

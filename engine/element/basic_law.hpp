@@ -90,7 +90,11 @@ public:
     }
     void trial(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) override {
         trial_tangent(k);
-        q = k * e;
+        // k·e written out for its three nonzero pairs (the general 3 × 3 product was 4 % of an
+        // elastic run's time): the same sums in the same order.
+        q[0] = axial_ * e[0];
+        q[1] = near_ * e[1] + far_ * e[2];
+        q[2] = far_ * e[1] + near_ * e[2];
     }
     void trial_tangent(Eigen::Matrix3d& k) const override {
         k << axial_, 0.0, 0.0, 0.0, near_, far_, 0.0, far_, near_;

@@ -181,48 +181,75 @@ bool BlockProfileLdlt::factorize(const SparseMatrix& K) {
     return true;
 }
 
-void BlockProfileLdlt::forward(double* w) const {
+template <std::size_t Count>
+void BlockProfileLdlt::forward(const std::array<double*, Count>& w) const {
     // L y = b by block rows.
     for (int k = 0; k < blocks_; ++k) {
         const int first = first_[static_cast<std::size_t>(k)];
         const double* row = value_.data() + start_[static_cast<std::size_t>(k)];
-        double* wk = w + 3 * k;
         for (int j = first; j < k; ++j) {
             const double* L = row + 9 * (j - first);
-            const double* wj = w + 3 * j;
-            for (int r = 0; r < 3; ++r) wk[r] -= L[3 * r] * wj[0] + L[3 * r + 1] * wj[1] + L[3 * r + 2] * wj[2];
+            for (double* v : w) {
+                double* vk = v + 3 * k;
+                const double* vj = v + 3 * j;
+                for (int r = 0; r < 3; ++r) vk[r] -= L[3 * r] * vj[0] + L[3 * r + 1] * vj[1] + L[3 * r + 2] * vj[2];
+            }
         }
     }
 }
 
-void BlockProfileLdlt::backward(double* w) const {
+template <std::size_t Count>
+void BlockProfileLdlt::backward(const std::array<double*, Count>& w) const {
     // D z = y, then Lᵀ x = z by block rows from the last.
-    for (int k = 0; k < blocks_; ++k) block_pivots_[static_cast<std::size_t>(k)].solve(w + 3 * k);
+    for (int k = 0; k < blocks_; ++k)
+        for (double* v : w) block_pivots_[static_cast<std::size_t>(k)].solve(v + 3 * k);
     for (int k = blocks_ - 1; k >= 0; --k) {
         const int first = first_[static_cast<std::size_t>(k)];
         const double* row = value_.data() + start_[static_cast<std::size_t>(k)];
-        const double* wk = w + 3 * k;
         for (int j = first; j < k; ++j) {
             const double* L = row + 9 * (j - first);
-            double* wj = w + 3 * j;
-            for (int s = 0; s < 3; ++s) wj[s] -= L[s] * wk[0] + L[3 + s] * wk[1] + L[6 + s] * wk[2];
+            for (double* v : w) {
+                const double* vk = v + 3 * k;
+                double* vj = v + 3 * j;
+                for (int s = 0; s < 3; ++s) vj[s] -= L[s] * vk[0] + L[3 + s] * vk[1] + L[6 + s] * vk[2];
+            }
         }
     }
 }
 
+namespace {
+
+// b in the padded order (its padding zero), and back.
+void pad(const std::vector<int>& padded, const Eigen::VectorXd& b, std::vector<double>& w) {
+    std::fill(w.begin(), w.end(), 0.0);
+    for (std::size_t e = 0; e < padded.size(); ++e) w[static_cast<std::size_t>(padded[e])] = b[static_cast<Eigen::Index>(e)];
+}
+
+void unpad(const std::vector<int>& padded, const std::vector<double>& w, Eigen::VectorXd& x) {
+    x.resize(static_cast<Eigen::Index>(padded.size()));
+    for (std::size_t e = 0; e < padded.size(); ++e) x[static_cast<Eigen::Index>(e)] = w[static_cast<std::size_t>(padded[e])];
+}
+
+} // namespace
+
 void BlockProfileLdlt::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-    std::fill(work_.begin(), work_.end(), 0.0);
-    for (std::size_t e = 0; e < padded_.size(); ++e) work_[static_cast<std::size_t>(padded_[e])] = b[static_cast<Eigen::Index>(e)];
-    forward(work_.data());
-    backward(work_.data());
-    x.resize(b.size());
-    for (std::size_t e = 0; e < padded_.size(); ++e) x[static_cast<Eigen::Index>(e)] = work_[static_cast<std::size_t>(padded_[e])];
+    pad(padded_, b, work_);
+    const std::array<double*, 1> w{work_.data()};
+    forward(w);
+    backward(w);
+    unpad(padded_, work_, x);
 }
 
 void BlockProfileLdlt::solve(const Eigen::VectorXd& b1, const Eigen::VectorXd& b2, Eigen::VectorXd& x1,
                              Eigen::VectorXd& x2) const {
-    solve(b1, x1);
-    solve(b2, x2);
+    work2_.resize(work_.size());
+    pad(padded_, b1, work_);
+    pad(padded_, b2, work2_);
+    const std::array<double*, 2> w{work_.data(), work2_.data()};
+    forward(w);
+    backward(w);
+    unpad(padded_, work_, x1);
+    unpad(padded_, work2_, x2);
 }
 
 } // namespace plastica

@@ -10,6 +10,7 @@
 #include "solver/block_assembler.hpp"
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 namespace plastica {
@@ -39,8 +40,12 @@ private:
         double l10, l20, l21;
         void solve(double* v) const;
     };
-    void forward(double* w) const;
-    void backward(double* w) const;
+    // L y = b, then D z = y and Lᵀ x = z, in place on each of the padded vectors: one pass over
+    // the factor serves them all, each with the arithmetic it has alone.
+    template <std::size_t Count>
+    void forward(const std::array<double*, Count>& w) const;
+    template <std::size_t Count>
+    void backward(const std::array<double*, Count>& w) const;
 
     int blocks_ = 0;
     std::vector<int> padded_;        // each equation's index in the padded (3 per block) vector
@@ -54,7 +59,7 @@ private:
     std::vector<double> pivots_;
     std::vector<int> pivot_equations_;
     std::vector<int> pivots_of_; // the inverse of pivot_equations_
-    mutable std::vector<double> work_; // the padded right-hand side being solved
+    mutable std::vector<double> work_, work2_; // the padded right-hand sides being solved
 };
 
 } // namespace plastica

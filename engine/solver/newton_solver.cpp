@@ -13,6 +13,8 @@ namespace {
 constexpr double max_correction_growth = 100.0;
 // A residual within this multiple of the state's round-off floor (an estimate of its order) is round-off.
 constexpr double round_off_margin = 10.0;
+// A correction this share of the displacement tolerance need not be taken (accept_before_correction).
+constexpr double unapplied_correction_share = 1e-2;
 } // namespace
 
 const char* to_string(Acceptance rule) {
@@ -55,6 +57,8 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
     double lowest = std::numeric_limits<double>::infinity(); // of the corrections' residuals
     int last_lowest = 1;
     bool release = false; // re-decide frozen active sets at the next evaluation
+    bool in_equilibrium = false; // the evaluated state is within the tolerance, active sets settled
+    double correction_floor = 0.0; // round-off of the whole state, for a correction
     Eigen::VectorXd du_r, du_f, du; // corrections for the residual, per unit load, and in all
     if (!problem.evaluate(0, false)) {
         result.failure = NewtonFailure::non_finite;
@@ -88,9 +92,11 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             // between two states that far apart without ever settling, and a tiny last
             // increment that lands on a target has no other scale.
             const double floor = 1e-9 * problem.state_norm();
+            correction_floor = floor;
             const bool small_correction = last_correction <= settings.displacement_tolerance * result.increment.norm() ||
                                           last_correction <= floor;
             const bool settled = problem.settled();
+            in_equilibrium = settled && relative <= settings.residual_tolerance;
             // Equilibrium with frozen active sets that the state contradicts: let them be
             // re-decided once, then freeze again (an active-set iteration).
             release = !settled && relative <= settings.residual_tolerance * settings.stagnation_factor;
@@ -166,6 +172,19 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         if (!du.allFinite()) {
             result.failure = NewtonFailure::non_finite;
             return result;
+        }
+        // A state in equilibrium whose own correction is far inside the tolerance is accepted
+        // as it stands: the correction and the evaluation after it would move it by less than
+        // 1e-10 of the increment and of the load level.
+        if (settings.accept_before_correction && in_equilibrium) {
+            const double tiny = unapplied_correction_share * settings.displacement_tolerance;
+            const double size = du.norm();
+            if (std::abs(dl) <= tiny * std::abs(problem.load_factor()) &&
+                (size <= tiny * result.increment.norm() || size <= unapplied_correction_share * correction_floor)) {
+                result.iterations = it + 1;
+                result.rule = Acceptance::residual;
+                return result;
+            }
         }
         const double before = residual.norm();
         // A cycle (the residual repeating that of two or three iterations ago) means Newton

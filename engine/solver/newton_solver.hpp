@@ -66,6 +66,11 @@ struct NewtonSettings {
     bool fail_fast = false;
     // Give up after this many corrections without a new lowest residual.
     int stall_iterations = 10;
+    // Accept an evaluated state in equilibrium whose own correction is within a hundredth of
+    // the displacement tolerance, in the state and in the load factor, without taking that
+    // correction: it saves the evaluation after it and moves the path by less than 1e-10 of an
+    // increment. For smooth laws (elastic members); see path_following.cpp.
+    bool accept_before_correction = false;
 };
 
 struct NewtonResult {
