@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <vector>
@@ -41,24 +42,42 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
     for (std::size_t i = 0; i < n; ++i)
         at[i] = {model.nodes[i].x + u[dofs_per_node * i], model.nodes[i].y + u[dofs_per_node * i + 1]};
 
-    // Element chords, swept along x: only pairs whose x ranges overlap are tested.
+    // Element chords, swept along the axis on which they overlap less (x for a beam, y for a
+    // half ring, whose upper and lower arcs share their x range): only pairs whose ranges on it
+    // overlap are tested.
     const std::vector<ElementSpec>& elements = model.elements;
+    double spread[2] = {0.0, 0.0}, low_box[2] = {0.0, 0.0}, high_box[2] = {0.0, 0.0};
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+        const Point &a = at[elements[e].node_i], &b = at[elements[e].node_j];
+        spread[0] += std::abs(b.x - a.x);
+        spread[1] += std::abs(b.y - a.y);
+        const double lo[2] = {std::min(a.x, b.x), std::min(a.y, b.y)}, hi[2] = {std::max(a.x, b.x), std::max(a.y, b.y)};
+        for (int axis = 0; axis < 2; ++axis) {
+            low_box[axis] = e == 0 ? lo[axis] : std::min(low_box[axis], lo[axis]);
+            high_box[axis] = e == 0 ? hi[axis] : std::max(high_box[axis], hi[axis]);
+        }
+    }
+    // Overlap on an axis: the chords' summed extent over the structure's (∞ when it is flat).
+    auto overlap = [&](int axis) {
+        const double box = high_box[axis] - low_box[axis];
+        return box > 0.0 ? spread[axis] / box : std::numeric_limits<double>::infinity();
+    };
+    const bool along_y = overlap(1) < overlap(0);
+    auto coordinate = [along_y](const Point& p) { return along_y ? p.y : p.x; };
     std::vector<std::size_t> order(elements.size());
     std::iota(order.begin(), order.end(), 0);
     std::vector<double> lows(elements.size()), highs(elements.size()), lengths(elements.size());
     for (std::size_t e = 0; e < elements.size(); ++e) {
         const Point &a = at[elements[e].node_i], &b = at[elements[e].node_j];
-        lows[e] = std::min(a.x, b.x);
-        highs[e] = std::max(a.x, b.x);
+        lows[e] = std::min(coordinate(a), coordinate(b));
+        highs[e] = std::max(coordinate(a), coordinate(b));
         lengths[e] = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
     }
-    auto low = [&](std::size_t e) { return lows[e]; };
-    auto high = [&](std::size_t e) { return highs[e]; };
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lows[a] < lows[b]; });
     for (std::size_t k = 0; k < order.size(); ++k) {
         const ElementSpec& e = elements[order[k]];
         const Point &a = at[e.node_i], &b = at[e.node_j];
-        for (std::size_t m = k + 1; m < order.size() && low(order[m]) <= high(order[k]); ++m) {
+        for (std::size_t m = k + 1; m < order.size() && lows[order[m]] <= highs[order[k]]; ++m) {
             const ElementSpec& f = elements[order[m]];
             if (f.node_i == e.node_i || f.node_i == e.node_j || f.node_j == e.node_i || f.node_j == e.node_j) continue;
             const Point &c = at[f.node_i], &d = at[f.node_j];

@@ -63,10 +63,12 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
     // f = Bᵀ q, the sums in the order of Eigen's fixed-size product (as the tangent below).
     const double N = q_trial_[0], Mi = q_trial_[1], Mj = q_trial_[2];
     const ChordVectors chord(c, s);
-    for (int i = 0; i < 6; ++i) {
-        const double bending = -chord.z[i] / L;
-        force[i] = chord.r[i] * N + (bending + (i == 2 ? 1.0 : 0.0)) * Mi + (bending + (i == 5 ? 1.0 : 0.0)) * Mj;
-    }
+    // b = −z/L with two divisions instead of six: the second node's entries are the first's
+    // negated (exactly), the rotations' are −0/L = −0.
+    const double b0 = -s / L, b1 = c / L;
+    const double bending[6] = {b0, b1, -0.0, -b0, -b1, -0.0};
+    for (int i = 0; i < 6; ++i)
+        force[i] = chord.r[i] * N + (bending[i] + (i == 2 ? 1.0 : 0.0)) * Mi + (bending[i] + (i == 5 ? 1.0 : 0.0)) * Mj;
     if (tangent) this->tangent(*tangent);
 }
 

@@ -4,6 +4,28 @@
 
 namespace plastica {
 
+namespace {
+
+// The slots of each column's runs of three rows when every group of three equations of the
+// block is a node's three consecutive free equations (so their rows lie next to each other in
+// every column), else none.
+std::vector<int> column_runs(const std::vector<int>& eqs, const std::vector<int>& slots) {
+    const std::size_t n = eqs.size();
+    if (n % 3 != 0) return {};
+    for (std::size_t g = 0; g < n; g += 3)
+        if (eqs[g] < 0 || eqs[g + 1] != eqs[g] + 1 || eqs[g + 2] != eqs[g] + 2) return {};
+    std::vector<int> runs;
+    for (std::size_t b = 0; b < n; ++b)
+        for (std::size_t g = 0; g < n; g += 3) {
+            const int first = slots[g * n + b];
+            if (slots[(g + 1) * n + b] != first + 1 || slots[(g + 2) * n + b] != first + 2) return {};
+            runs.push_back(first);
+        }
+    return runs;
+}
+
+} // namespace
+
 BlockAssembler::BlockAssembler(int size, const std::vector<std::vector<int>>& blocks)
     : matrix_(size, size) {
     std::vector<Eigen::Triplet<double>> pattern;
@@ -29,7 +51,7 @@ BlockAssembler::BlockAssembler(int size, const std::vector<std::vector<int>>& bl
                 const int* hit = std::lower_bound(rows + begin, rows + end, eqs[a]);
                 slots[a * eqs.size() + b] = static_cast<int>(hit - rows);
             }
-        complete_.push_back(std::find(slots.begin(), slots.end(), -1) == slots.end());
+        column_runs_.push_back(column_runs(eqs, slots));
         slots_.push_back(std::move(slots));
     }
 }

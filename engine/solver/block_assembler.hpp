@@ -22,9 +22,16 @@ public:
         const std::vector<int>& slots = slots_[block];
         const int n = static_cast<int>(values.rows());
         double* data = matrix_.valuePtr();
-        if (complete_[block]) { // no DOF left out: no test per entry
-            for (int a = 0; a < n; ++a)
-                for (int b = 0; b < n; ++b) data[slots[a * n + b]] += values(a, b);
+        if (!column_runs_[block].empty()) {
+            // Each node's three rows of a column are three neighbouring values: one slot per run.
+            const int* run = column_runs_[block].data();
+            for (int b = 0; b < n; ++b)
+                for (int g = 0; g < n; g += 3, ++run) {
+                    double* at = data + *run;
+                    at[0] += values(g, b);
+                    at[1] += values(g + 1, b);
+                    at[2] += values(g + 2, b);
+                }
             return;
         }
         for (int a = 0; a < n; ++a)
@@ -38,7 +45,9 @@ public:
 private:
     SparseMatrix matrix_;
     std::vector<std::vector<int>> slots_;
-    std::vector<bool> complete_; // per block: every entry has a slot
+    // Per block whose equations come in free node triples (3 consecutive equations each): the
+    // slot of each column's run of three rows, column by column; empty for any other block.
+    std::vector<std::vector<int>> column_runs_;
 };
 
 } // namespace plastica
