@@ -7,17 +7,31 @@
 
 namespace plastica::cli {
 
-BackgroundOutput::BackgroundOutput(Sink sink, std::size_t capacity, std::size_t batch, std::chrono::milliseconds latency)
-    : sink_(std::move(sink)), capacity_(capacity), batch_(std::min(batch, capacity)), latency_(latency),
+namespace {
+
+// The memory a copy of the step takes (its vectors' contents and the records they hold).
+std::size_t bytes_of(const StepResult& step) {
+    std::size_t bytes = sizeof(StepResult) + sizeof(double) * (step.displacement.size() + step.reaction.size() + step.applied_load.size()) +
+                        sizeof(ElementResult) * step.elements.size() + sizeof(SpringResult) * step.springs.size();
+    for (const ElementResult& e : step.elements) bytes += sizeof(SectionReport) * e.sections.size();
+    return bytes;
+}
+
+} // namespace
+
+BackgroundOutput::BackgroundOutput(Sink sink, std::size_t capacity, std::size_t batch, std::chrono::milliseconds latency,
+                                   std::size_t budget)
+    : sink_(std::move(sink)), capacity_(capacity), batch_(std::min(batch, capacity)), budget_(budget), latency_(latency),
       worker_([this] { work(); }) {}
 
 BackgroundOutput::~BackgroundOutput() { finish(); }
 
 void BackgroundOutput::push(const StepResult& step) {
+    const std::size_t limit = std::min(capacity_, std::max<std::size_t>(2, budget_ / bytes_of(step)));
     std::unique_ptr<StepResult> copy;
     {
         std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [this] { return queue_.size() < capacity_ || failure_; });
+        changed_.wait(lock, [&] { return queue_.size() < limit || failure_; });
         if (failure_) throw std::runtime_error(failure_->message);
         if (!spare_.empty()) {
             copy = std::move(spare_.back()); // the most recently written: its memory is the warmest
@@ -34,7 +48,7 @@ void BackgroundOutput::push(const StepResult& step) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         queue_.push_back(std::move(copy));
-        wake = queue_.size() >= batch_;
+        wake = queue_.size() >= std::min(batch_, limit);
     }
     if (wake) changed_.notify_all();
 }

@@ -1,10 +1,15 @@
 // The series writer's thread: steps reach the sink in order, and the first one it cannot take
-// ends the writing, is reported with its step, and stops the analysis at its next hand-over.
+// ends the writing, is reported with its step, and stops the analysis at its next hand-over;
+// the queue holds large steps fewer at a time.
 #include "background_output.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace plastica;
@@ -77,4 +82,32 @@ TEST_CASE("Background output hands over each step whole, also into the storage o
     output.finish();
     CHECK(mismatches.empty());
     CHECK_FALSE(output.failure());
+}
+
+TEST_CASE("Background output holds large steps two at a time, small ones up to its capacity", "[cli][output]") {
+    // A slow sink: the analysis runs ahead as far as the queue lets it. The step being written
+    // counts as queued, so at most `limit` pushed steps are not yet written when the sink runs.
+    const auto most_ahead = [](std::size_t doubles) {
+        std::atomic<int> pushed{0};
+        int written = 0, ahead = 0;
+        BackgroundOutput output(
+            [&](const StepResult&) {
+                ahead = std::max(ahead, pushed.load() - written);
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                ++written;
+            },
+            16, 8, std::chrono::milliseconds(20), 256 * 1024);
+        for (int k = 0; k < 40; ++k) {
+            StepResult r = step(k);
+            r.displacement.assign(doubles, 1.0);
+            output.push(r);
+            ++pushed;
+        }
+        output.finish();
+        return ahead;
+    };
+    CHECK(most_ahead(100000) <= 2);     // 800 kB a step: two at a time
+    const int small = most_ahead(1000); // 8 kB a step: the capacity of 16 binds
+    CHECK(small > 2);
+    CHECK(small <= 16);
 }
