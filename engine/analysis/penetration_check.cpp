@@ -46,21 +46,21 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
     // half ring, whose upper and lower arcs share their x range): only pairs whose ranges on it
     // overlap are tested.
     const std::vector<ElementSpec>& elements = model.elements;
-    double spread[2] = {0.0, 0.0}, low_box[2] = {0.0, 0.0}, high_box[2] = {0.0, 0.0};
-    for (std::size_t e = 0; e < elements.size(); ++e) {
-        const Point &a = at[elements[e].node_i], &b = at[elements[e].node_j];
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double spread[2] = {0.0, 0.0}, low_box[2] = {inf, inf}, high_box[2] = {-inf, -inf};
+    for (const ElementSpec& element : elements) {
+        const Point &a = at[element.node_i], &b = at[element.node_j];
         spread[0] += std::abs(b.x - a.x);
         spread[1] += std::abs(b.y - a.y);
-        const double lo[2] = {std::min(a.x, b.x), std::min(a.y, b.y)}, hi[2] = {std::max(a.x, b.x), std::max(a.y, b.y)};
-        for (int axis = 0; axis < 2; ++axis) {
-            low_box[axis] = e == 0 ? lo[axis] : std::min(low_box[axis], lo[axis]);
-            high_box[axis] = e == 0 ? hi[axis] : std::max(high_box[axis], hi[axis]);
-        }
+        low_box[0] = std::min({low_box[0], a.x, b.x});
+        low_box[1] = std::min({low_box[1], a.y, b.y});
+        high_box[0] = std::max({high_box[0], a.x, b.x});
+        high_box[1] = std::max({high_box[1], a.y, b.y});
     }
     // Overlap on an axis: the chords' summed extent over the structure's (∞ when it is flat).
     auto overlap = [&](int axis) {
         const double box = high_box[axis] - low_box[axis];
-        return box > 0.0 ? spread[axis] / box : std::numeric_limits<double>::infinity();
+        return box > 0.0 ? spread[axis] / box : inf;
     };
     const bool along_y = overlap(1) < overlap(0);
     auto coordinate = [along_y](const Point& p) { return along_y ? p.y : p.x; };

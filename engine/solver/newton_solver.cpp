@@ -59,6 +59,12 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
     bool release = false; // re-decide frozen active sets at the next evaluation
     bool in_equilibrium = false; // the evaluated state is within the tolerance, active sets settled
     double correction_floor = 0.0; // round-off of the whole state, for a correction
+    // A correction within `share` of the displacement tolerance of the increment, or of the
+    // round-off floor of the whole state.
+    const auto within = [&](double correction, double share) {
+        return correction <= share * settings.displacement_tolerance * result.increment.norm() ||
+               correction <= share * correction_floor;
+    };
     Eigen::VectorXd du_r, du_f, du; // corrections for the residual, per unit load, and in all
     if (!problem.evaluate(0, false)) {
         result.failure = NewtonFailure::non_finite;
@@ -91,10 +97,8 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             // state: a piecewise-linear law (a hinge turning round) can make Newton swap
             // between two states that far apart without ever settling, and a tiny last
             // increment that lands on a target has no other scale.
-            const double floor = 1e-9 * problem.state_norm();
-            correction_floor = floor;
-            const bool small_correction = last_correction <= settings.displacement_tolerance * result.increment.norm() ||
-                                          last_correction <= floor;
+            correction_floor = 1e-9 * problem.state_norm();
+            const bool small_correction = within(last_correction, 1.0);
             const bool settled = problem.settled();
             in_equilibrium = settled && relative <= settings.residual_tolerance;
             // Equilibrium with frozen active sets that the state contradicts: let them be
@@ -116,7 +120,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
                 }
                 // Round-off stagnation: the state no longer moves, the residual no longer falls,
                 // and it is within a few times the tolerance (a stiff membrane's floor).
-                if (last_correction <= floor && relative > 0.5 * previous_relative &&
+                if (last_correction <= correction_floor && relative > 0.5 * previous_relative &&
                     relative <= settings.stagnation_factor * settings.residual_tolerance) {
                     result.rule = Acceptance::stagnation;
                     return result;
@@ -178,9 +182,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         // 1e-10 of the increment and of the load level.
         if (settings.accept_before_correction && in_equilibrium) {
             const double tiny = unapplied_correction_share * settings.displacement_tolerance;
-            const double size = du.norm();
-            if (std::abs(dl) <= tiny * std::abs(problem.load_factor()) &&
-                (size <= tiny * result.increment.norm() || size <= unapplied_correction_share * correction_floor)) {
+            if (std::abs(dl) <= tiny * std::abs(problem.load_factor()) && within(du.norm(), unapplied_correction_share)) {
                 result.iterations = it + 1;
                 result.rule = Acceptance::residual;
                 return result;
