@@ -1,6 +1,7 @@
 #include "atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -89,10 +90,14 @@ void write_file_atomically(const std::string& path, const std::string& contents)
 void write_file_in_place(const std::string& path, const std::string& contents) {
     try {
         // Not truncated on opening: the new contents go over the old blocks, and only a tail
-        // the new file no longer needs is cut off (freeing blocks can mean a synchronous discard).
+        // the new file no longer needs is cut off (freeing blocks can mean a synchronous discard;
+        // even a cut to the file's own size invalidates its last page, so that is not asked for).
         Descriptor file(path, O_CREAT);
+        struct stat before {};
+        if (::fstat(file.get(), &before) != 0) file.fail();
         write_all(file.get(), contents.data(), contents.size(), path);
-        if (::ftruncate(file.get(), static_cast<off_t>(contents.size())) != 0) file.fail();
+        if (before.st_size > static_cast<off_t>(contents.size()) && ::ftruncate(file.get(), static_cast<off_t>(contents.size())) != 0)
+            file.fail();
         file.close();
     } catch (...) {
         ::unlink(path.c_str());

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstring>
 #include <stdexcept>
 
 namespace plastica {
@@ -83,12 +84,27 @@ private:
 struct Writer {
     std::string xml;
     Appended appended;
+    // Filled as arrays are added: where each one's values lie in the appended block.
+    std::vector<ArraySlot> slots;
+    // A file whose values are overwritten in place (write_unstructured_grid): no text is written,
+    // and each array's values go to its slot while the arrays match the slots.
+    UncompressedGridFile* refill = nullptr;
+    bool refill_fits = true;
+    std::size_t refilled = 0; // arrays met while refilling
+    std::size_t block_start = 0; // where the appended block begins in the finished file
+    const char* section = "";    // the element the arrays being added belong to
 
     explicit Writer(Compression c, std::size_t array_bytes) : appended(c, array_bytes) { xml.reserve(8192); }
+    explicit Writer(UncompressedGridFile& file) : appended(Compression::none, 0), refill(&file) {}
 
-    void piece(const char* text) { xml += text; }
-    void piece(const std::string& text) { xml += text; }
+    void piece(const char* text) {
+        if (!refill) xml += text;
+    }
+    void piece(const std::string& text) {
+        if (!refill) xml += text;
+    }
     void piece(std::size_t number) {
+        if (refill) return;
         char digits[24];
         xml.append(digits, std::to_chars(digits, digits + sizeof digits, number).ptr);
     }
@@ -96,14 +112,41 @@ struct Writer {
     void put(const Pieces&... pieces) {
         (piece(pieces), ...);
     }
-    void name(const std::string& text) { append_xml_escaped(xml, text); }
+    void name(const std::string& text) {
+        if (!refill) append_xml_escaped(xml, text);
+    }
+
+    // The array's values into the appended block; its offset there.
+    std::size_t add(const std::string& array_name, const char* type, int components, std::size_t tuples, const void* data,
+                    std::size_t bytes) {
+        if (!refill) {
+            const std::size_t offset = appended.add(data, bytes);
+            slots.push_back({section, array_name, type, components, tuples, bytes, offset});
+            return offset;
+        }
+        const std::size_t index = refilled++;
+        if (!refill_fits || index >= refill->slots.size()) {
+            refill_fits = false;
+            return 0;
+        }
+        const ArraySlot& slot = refill->slots[index];
+        // What the array's tag says (the rest of the text follows from the tags and byte counts).
+        if (slot.bytes != bytes || slot.tuples != tuples || slot.components != components || std::strcmp(slot.type, type) != 0 ||
+            std::strcmp(slot.section, section) != 0 || slot.name != array_name) {
+            refill_fits = false;
+            return 0;
+        }
+        // After the array's header, its byte count.
+        std::copy_n(static_cast<const char*>(data), bytes, &refill->bytes[refill->block_start + slot.offset + sizeof(std::uint64_t)]);
+        return slot.offset;
+    }
 
     void data_array(const XmlArray& array, const char* indent, bool tuples_attribute) {
         if (const auto* text = std::get_if<std::vector<std::string>>(&array.values)) {
             // Strings: each value's characters and a terminating NUL, in one block.
             std::string bytes;
             for (const std::string& s : *text) bytes.append(s).push_back('\0');
-            const std::size_t offset = appended.add(bytes.data(), bytes.size());
+            const std::size_t offset = add(array.name, "String", 1, text->size(), bytes.data(), bytes.size());
             put(indent, "<Array type=\"String\" Name=\"");
             name(array.name);
             put("\" NumberOfTuples=\"", text->size(), "\" format=\"appended\" offset=\"", offset, "\"/>\n");
@@ -113,11 +156,11 @@ struct Writer {
         std::size_t offset = 0;
         if (const auto* real = std::get_if<std::vector<double>>(&array.values)) {
             type = "Float64";
-            offset = appended.add(real->data(), real->size() * sizeof(double));
+            offset = add(array.name, type, array.components, array.tuples(), real->data(), real->size() * sizeof(double));
         } else {
             const auto& integer = std::get<std::vector<std::int32_t>>(array.values);
             type = "Int32";
-            offset = appended.add(integer.data(), integer.size() * sizeof(std::int32_t));
+            offset = add(array.name, type, array.components, array.tuples(), integer.data(), integer.size() * sizeof(std::int32_t));
         }
         put(indent, "<DataArray type=\"", type, "\" Name=\"");
         name(array.name);
@@ -128,6 +171,7 @@ struct Writer {
     }
 
     void attribute_data(const std::vector<XmlArray>& arrays, const char* tag, const std::string& vectors) {
+        section = tag;
         put("      <", tag);
         if (!vectors.empty()) {
             put(" Vectors=\"");
@@ -145,6 +189,7 @@ struct Writer {
         if (compression == Compression::zlib) put(" compressor=\"vtkZLibDataCompressor\"");
         put(">\n  <", type, ">\n");
         if (!data.field_data.empty()) {
+            section = "FieldData";
             put("    <FieldData>\n");
             for (const XmlArray& a : data.field_data) data_array(a, "      ", true);
             put("    </FieldData>\n");
@@ -152,6 +197,7 @@ struct Writer {
     }
 
     void points(const XmlDataset& data) {
+        section = "Points";
         put("      <Points>\n");
         data_array({"Points", 3, data.points}, "        ", false);
         put("      </Points>\n");
@@ -162,14 +208,16 @@ struct Writer {
         const std::size_t count = connectivity.size() / static_cast<std::size_t>(points_per_cell);
         std::vector<std::int64_t> offsets(count);
         for (std::size_t c = 0; c < count; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * static_cast<std::size_t>(points_per_cell));
-        const std::size_t at_connectivity = appended.add(connectivity.data(), connectivity.size() * sizeof(std::int64_t));
-        const std::size_t at_offsets = appended.add(offsets.data(), offsets.size() * sizeof(std::int64_t));
+        section = tag;
+        const std::size_t at_connectivity =
+            add("connectivity", "Int64", 1, connectivity.size(), connectivity.data(), connectivity.size() * sizeof(std::int64_t));
+        const std::size_t at_offsets = add("offsets", "Int64", 1, count, offsets.data(), offsets.size() * sizeof(std::int64_t));
         put("      <", tag, ">\n",
             "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"", at_connectivity, "\"/>\n",
             "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"", at_offsets, "\"/>\n");
         if (with_types) {
             const std::vector<std::uint8_t> types(count, type);
-            const std::size_t at_types = appended.add(types.data(), types.size());
+            const std::size_t at_types = add("types", "UInt8", 1, count, types.data(), types.size());
             put("        <DataArray type=\"UInt8\" Name=\"types\" format=\"appended\" offset=\"", at_types, "\"/>\n");
         }
         put("      </", tag, ">\n");
@@ -179,6 +227,7 @@ struct Writer {
         static const char tail[] = "\n  </AppendedData>\n</VTKFile>\n";
         put("    </Piece>\n  </", type, ">\n  <AppendedData encoding=\"raw\">\n   _");
         xml.reserve(xml.size() + appended.bytes().size() + sizeof tail);
+        block_start = xml.size();
         xml += appended.bytes();
         xml += tail;
         return std::move(xml);
@@ -203,18 +252,38 @@ std::size_t raw_bytes(const XmlDataset& data) {
     return bytes;
 }
 
-} // namespace
-
-std::string unstructured_grid_xml(const XmlDataset& data, Compression compression) {
+// A grid's file through `w`: its text and arrays, or (refilling) its arrays' values only.
+void write_grid(Writer& w, const XmlDataset& data, Compression compression) {
     if (!data.vertices.empty()) throw std::logic_error("unstructured_grid_xml: a grid of this series holds line cells only");
-    Writer w(compression, raw_bytes(data));
     w.header("UnstructuredGrid", compression, data);
     w.put("    <Piece NumberOfPoints=\"", data.point_count(), "\" NumberOfCells=\"", data.lines.size(), "\">\n");
     w.attribute_data(data.point_data, "PointData", data.active_vectors);
     w.attribute_data(data.cell_data, "CellData", "");
     w.points(data);
     w.cells("Cells", flat(data.lines), 2, true, vtk_line);
+}
+
+} // namespace
+
+std::string unstructured_grid_xml(const XmlDataset& data, Compression compression) {
+    Writer w(compression, raw_bytes(data));
+    write_grid(w, data, compression);
     return w.finish("UnstructuredGrid");
+}
+
+const std::string& write_unstructured_grid(const XmlDataset& data, UncompressedGridFile& file) {
+    if (!file.bytes.empty() && file.active_vectors == data.active_vectors) {
+        Writer refill(file);
+        write_grid(refill, data, Compression::none);
+        if (refill.refill_fits && refill.refilled == file.slots.size()) return file.bytes;
+    }
+    Writer w(Compression::none, raw_bytes(data));
+    write_grid(w, data, Compression::none);
+    file.slots = std::move(w.slots);
+    file.active_vectors = data.active_vectors;
+    file.bytes = w.finish("UnstructuredGrid");
+    file.block_start = w.block_start;
+    return file.bytes;
 }
 
 std::string poly_data_xml(const XmlDataset& data, Compression compression) {

@@ -6,9 +6,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <stdexcept>
 
 namespace plastica {
@@ -140,6 +140,8 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
     }
     std::vector<XmlArray>& pd = grid.point_data;
     std::vector<XmlArray>& cd = grid.cell_data;
+    pd.reserve(arrays_.size()); // at most every array of the scene in one place: no reallocation
+    cd.reserve(arrays_.size());
     pd.push_back(std::move(displacement));
     grid.active_vectors = name::displacement;
     pd.push_back(std::move(rotation));
@@ -276,6 +278,7 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
 
     const double time = options_.time == SeriesTime::step ? static_cast<double>(r.step) : r.arc_length;
     std::vector<XmlArray>& fd = grid.field_data;
+    fd.reserve(arrays_.size());
     fd.push_back(field_value(name::time_value, time));
     fd.push_back(field_value(name::load_factor, r.load_factor));
     fd.push_back(field_value(name::load, r.load));
@@ -299,11 +302,14 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
         fd.push_back(field_text(name::displacement_unit, units_.displacement));
     }
 
-    const std::string file = "vtu/" + step_file_name(r.step);
+    const std::string step_name = step_file_name(r.step), file = "vtu/" + step_name;
     const std::string path = (fs::path(directory_) / file).string();
     // Listed in the PVD only once complete, so no reader of the series sees it half-written.
-    write_file_in_place(path, unstructured_grid_xml(grid, options_.compression));
-    earlier_steps_.erase(step_file_name(r.step));
+    if (options_.compression == Compression::none)
+        write_file_in_place(path, write_unstructured_grid(grid, step_file_));
+    else
+        write_file_in_place(path, unstructured_grid_xml(grid, options_.compression));
+    earlier_steps_.erase(step_name);
     try {
         append_to_pvd(time, file);
     } catch (...) {
@@ -364,11 +370,11 @@ void VtuSeriesWriter::append_to_pvd(double time, const std::string& file) {
         if (!pvd_) throw std::runtime_error("cannot open " + pvd_path_);
         pvd_tail_ = static_cast<long>(std::filesystem::file_size(pvd_path_) - closing.size());
     }
-    std::ostringstream x;
-    x.precision(17);
-    x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
-    if (has_base_file_) x << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"1\" file=\"base.vtp\"/>\n";
-    const std::string entry = x.str();
+    // The time as a stream with precision(17) prints it (%.17g): it reads back to the bit.
+    char digits[32];
+    const std::string timestep(digits, std::to_chars(digits, digits + sizeof digits, time, std::chars_format::general, 17).ptr);
+    std::string entry = "    <DataSet timestep=\"" + timestep + "\" group=\"\" part=\"0\" file=\"" + file + "\"/>\n";
+    if (has_base_file_) entry += "    <DataSet timestep=\"" + timestep + "\" group=\"\" part=\"1\" file=\"base.vtp\"/>\n";
     // One write of the new entries and the closing tags over the old closing tags: the file
     // is a complete collection before and after it.
     const int fd = ::fileno(pvd_.get());

@@ -62,6 +62,7 @@ private:
     long pvd_tail_ = 0; // where the closing tags start
     bool has_base_file_ = false;
     std::optional<StepResult> pending_;                   // last skipped step
+    UncompressedGridFile step_file_; // the last step's file, uncompressed: the next overwrites its values
 };
 
 std::string step_file_name(int step);

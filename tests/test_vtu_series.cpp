@@ -435,6 +435,44 @@ TEST_CASE("The XML serialiser's files read back through VTK to the last bit, in 
     }
 }
 
+TEST_CASE("A file kept from step to step has the bytes of one written whole, whatever changes between steps", "[output]") {
+    const auto dataset = [](double shift, int components) {
+        XmlDataset data;
+        const std::size_t n = 5;
+        XmlArray value = real_array("value", 2 * n / static_cast<std::size_t>(components), components);
+        for (std::size_t i = 0; i < n; ++i) {
+            data.points.insert(data.points.end(), {i + shift, -shift * i, 0.0});
+            if (i + 1 < n) data.lines.push_back({static_cast<std::int64_t>(i), static_cast<std::int64_t>(i + 1)});
+        }
+        for (std::size_t k = 0; k < 2 * n; ++k) std::get<std::vector<double>>(value.values)[k] = shift * k - 1.0 / 3.0;
+        data.point_data.push_back(value);
+        data.cell_data.push_back(integer_array("flag", n - 1));
+        data.field_data.push_back(field_value("load", shift));
+        data.field_data.push_back(field_text("title", "ring"));
+        return data;
+    };
+    UncompressedGridFile file;
+    std::vector<XmlDataset> steps = {dataset(0.0, 2), dataset(0.5, 2), dataset(1.5, 2)};
+    // The same bytes under another reading of them: one component each, as many tuples again.
+    steps.push_back(dataset(2.0, 1));
+    // Another active vector, another title of the same length, an array more, one element more.
+    steps.push_back(steps.back());
+    steps.back().active_vectors = "value";
+    steps.push_back(steps.back());
+    std::get<std::vector<std::string>>(steps.back().field_data[1].values)[0] = "pipe";
+    steps.push_back(steps.back());
+    steps.back().cell_data.push_back(real_array("axial", 4));
+    steps.push_back(steps.back());
+    steps.back().points.insert(steps.back().points.end(), {9.0, 9.0, 0.0});
+    steps.back().lines.push_back({4, 5});
+    for (XmlArray* a : {&steps.back().point_data[0], &steps.back().cell_data[0], &steps.back().cell_data[1]})
+        std::visit([&](auto& v) { v.resize(v.size() + static_cast<std::size_t>(a->components)); }, a->values);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        CAPTURE(k);
+        CHECK(write_unstructured_grid(steps[k], file) == unstructured_grid_xml(steps[k]));
+    }
+}
+
 TEST_CASE("Poly data holds vertices, then lines, with their cell values in that order", "[output]") {
     XmlDataset data;
     XmlArray kind = integer_array("kind", 0);
