@@ -105,6 +105,9 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     // would lie off the arc by the correction not taken, which moves the adaptive arc's steps
     // (Lee's frame: 95 steps against 104).
     settings.accept_before_correction = system_.all_members_elastic() && scheme != Scheme::arc_length;
+    // Where hinges or fibres make the laws piecewise linear; an elastic structure's residual that
+    // grows near convergence (a follower pressure's) is Newton's to reduce, not a kink.
+    settings.backtrack_at_kinks = !system_.all_members_elastic();
     const int step = step_ + 1;
     const IterationHook hook = [&](int iteration, double relative) {
         trace_.push_back({step, iteration, relative});

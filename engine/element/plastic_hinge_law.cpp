@@ -12,6 +12,11 @@ constexpr double eta_floor = 1e-6;
 // An end within this fraction of its capacity is on the capacity surface.
 constexpr double on_capacity = 1e-9;
 constexpr double no_limit = std::numeric_limits<double>::infinity();
+// How far a hinge's state advances is measured against its moment capacity at its axial force, but
+// never against less than this share of M_p: near the squash load M_p(N) falls to nothing and
+// |M|/M_p(N) would leap at any increment, so that adaptive steps shrank without end (the
+// catenary beam with twice the yield stress stopped at 0.143 of 0.3 with increments of 1e-11).
+constexpr double advance_capacity_floor = 0.1;
 } // namespace
 
 PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnds ends_served)
@@ -268,7 +273,7 @@ double PlasticHingeLaw::trial_yield_advance() const {
     // |M|/M_p(N) of an end in a state, against the capacity on the side it bends to.
     auto utilisation = [&](const Eigen::Vector3d& q, int end, double& capacity) {
         const double m = section_moment(q, end);
-        capacity = sections_[end].hinge_moment_capacity(q[0], m >= 0.0 ? 1.0 : -1.0);
+        capacity = std::max(sections_[end].hinge_moment_capacity(q[0], m >= 0.0 ? 1.0 : -1.0), advance_capacity_floor * moment_scale_);
         return capacity > 0.0 ? std::min(std::abs(m) / capacity, 1.0) : 0.0;
     };
     double advance = 0.0;

@@ -71,6 +71,9 @@ struct NewtonSettings {
     // correction: it saves the evaluation after it and moves the path by less than 1e-10 of an
     // increment. For smooth laws (elastic members); see path_following.cpp.
     bool accept_before_correction = false;
+    // Take back half of a correction that multiplied a residual within the stagnation band
+    // thirtyfold (it crossed a kink of a piecewise-linear law), up to four times an increment.
+    bool backtrack_at_kinks = false;
 };
 
 struct NewtonResult {
