@@ -104,7 +104,8 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         // hardening: a correction for a residual just above the tolerance can cross the kink where
         // the hinge unloads and throw the state far off. Half of that correction is taken back
         // (a backtracking line search), so that the state stays on the side Newton's model holds.
-        if (settings.backtrack_at_kinks && it >= 2 && backtracks < max_backtracks && last_good_relative <= settings.stagnation_factor * settings.residual_tolerance &&
+        const bool near_tolerance = last_good_relative <= settings.stagnation_factor * settings.residual_tolerance;
+        if (settings.backtrack_at_kinks && it >= 2 && backtracks < max_backtracks && near_tolerance &&
             relative > kink_growth * last_good_relative) {
             ++backtracks;
             last_move *= 0.5;
