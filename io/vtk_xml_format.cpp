@@ -84,8 +84,10 @@ private:
 struct Writer {
     std::string xml;
     Appended appended;
-    // Filled as arrays are added: where each one's values lie in the appended block.
+    // Where each array's values lie in the appended block, filled as arrays are added when
+    // `record_slots` (a file to be kept for refilling; other files need no record).
     std::vector<ArraySlot> slots;
+    bool record_slots = false;
     // A file whose values are overwritten in place (write_unstructured_grid): no text is written,
     // and each array's values go to its slot while the arrays match the slots.
     UncompressedGridFile* refill = nullptr;
@@ -121,7 +123,7 @@ struct Writer {
                     std::size_t bytes) {
         if (!refill) {
             const std::size_t offset = appended.add(data, bytes);
-            slots.push_back({section, array_name, type, components, tuples, bytes, offset});
+            if (record_slots) slots.push_back({section, array_name, type, components, tuples, bytes, offset});
             return offset;
         }
         const std::size_t index = refilled++;
@@ -278,6 +280,7 @@ const std::string& write_unstructured_grid(const XmlDataset& data, UncompressedG
         if (refill.refill_fits && refill.refilled == file.slots.size()) return file.bytes;
     }
     Writer w(Compression::none, raw_bytes(data));
+    w.record_slots = true;
     write_grid(w, data, Compression::none);
     file.slots = std::move(w.slots);
     file.active_vectors = data.active_vectors;
