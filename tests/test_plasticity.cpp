@@ -129,9 +129,11 @@ TEST_CASE("Adaptive increments bound the pseudo-springs' step error: the portal 
     // The pseudo-springs take η from the start of a step, so a step that carries an end far into
     // its yielding range overshoots its moment. With adaptive increments no step carries a hinge
     // section more than 0.05 of M_p into that range; the frame's curve (adaptive as shipped, from
-    // a first increment of 0.002 and of 0.01) then stays within 0.3 % of its peak of the curve in
-    // fixed increments ten times finer (measured 0.19 % and 0.25 %; 0.65 % and 0.39 % without the
-    // bound, 0.33 % and 0.32 % with a bound of 0.1).
+    // a first increment of 0.002 and of 0.01) then stays within 0.35 % of its peak of the curve in
+    // fixed increments ten times finer (measured 0.32 % and 0.32 %). The joints' hinges and
+    // springs sit in the columns, whose ends yield at N/N_y ≈ 0.8 where η falls fastest with the
+    // moment (analysis/hinge_allocation.hpp); while the beams' ends at N ≈ 0 served the joints
+    // and the columns' tops could pass their capacity, this measured 0.19 % and 0.25 %.
     const std::string scene = std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/portal_frame.toml";
     auto run = [&](const std::vector<Override>& overrides) { return run_model(read_scene(scene, overrides)); };
     const Run fine = run({{"analysis.adaptive", "false"}, {"analysis.increment", "0.0002"}, {"analysis.max_steps", "3000"}});
@@ -149,7 +151,7 @@ TEST_CASE("Adaptive increments bound the pseudo-springs' step error: the portal 
             worst = std::max(worst, std::abs(adaptive.steps[k].load - reference) / peak);
         }
         CAPTURE(first);
-        CHECK(worst < 3e-3);
+        CHECK(worst < 3.5e-3);
     }
 }
 
@@ -191,8 +193,12 @@ TEST_CASE("One hinge and one pseudo-spring serve a node where two equal sections
 TEST_CASE("The portal frame sways to its target on one to four elements per member, with one peak", "[plasticity]") {
     // With a pseudo-spring at each of two ends meeting mid-column, the frame in 2 or 3 elements
     // per member crept past its peak at millionths of its sway per step until the step limit.
-    // The peak is the hinges' (P-Δ, residual stresses), not the mesh's: measured 1.0463–1.0488
-    // on 1 to 20 elements per member, so within 0.3 % of the 8-element one.
+    // The peak is the hinges' (P-Δ, residual stresses), not the mesh's: measured 1.0432, 1.0436,
+    // 1.0446, 1.0455, 1.0474, 1.0474 and 1.0476 on 2, 1, 3, 4, 8, 16 and 20 elements per member,
+    // so within 0.5 % of the 8-element one and rising towards it as the mesh is refined: the
+    // pseudo-spring's stiffness 6EI/L·η/(1 − η) is an element's, and the columns' ends, which
+    // carry the joints' hinges at N/N_y ≈ 0.8, soften over a range of moment that a long
+    // element spreads further.
     const std::string scene = std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/portal_frame.toml";
     auto run = [&](int elements) {
         const std::string n = std::to_string(elements);
@@ -204,7 +210,7 @@ TEST_CASE("The portal frame sways to its target on one to four elements per memb
         CAPTURE(elements);
         REQUIRE(r.summary.status == RunStatus::completed);
         CHECK(r.steps.size() < 150u); // 57 to 74 steps
-        CHECK(r.max_load() == Approx(peak).epsilon(3e-3));
+        CHECK(r.max_load() == Approx(peak).epsilon(5e-3));
         CHECK(r.steps.back().load < 0.7 * peak); // far past the peak
     }
 }

@@ -36,8 +36,7 @@ std::vector<double> section_capacities(const Model& model) {
 
 } // namespace
 
-std::vector<HingeEnds> allocate_hinge_capacity(const Model& model) {
-    std::vector<HingeEnds> served(model.elements.size());
+JointHinges::JointHinges(const Model& model) : served_(model.elements.size()) {
     // The ends of hinge elements at each node, as (element, end).
     std::vector<std::vector<std::array<int, 2>>> ends(model.nodes.size());
     std::vector<int> members(model.nodes.size(), 0);
@@ -52,22 +51,54 @@ std::vector<HingeEnds> allocate_hinge_capacity(const Model& model) {
     const std::vector<double> capacity = section_capacities(model);
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
         if (members[n] != 2 || ends[n].size() != 2 || taken[n]) continue;
-        const auto strength = [&](const std::array<int, 2>& end) {
-            return capacity[model.elements[end[0]].section];
-        };
+        Joint joint;
+        joint.ends = {ends[n][0], ends[n][1]};
+        const std::array<double, 2> strength{capacity[model.elements[ends[n][0][0]].section],
+                                             capacity[model.elements[ends[n][1][0]].section]};
+        joint.equal_sections = model.elements[ends[n][0][0]].section == model.elements[ends[n][1][0]].section ||
+                               strength[0] == strength[1];
         // Equal sections: the first end, as listed.
-        const std::array<int, 2>& weaker = strength(ends[n][1]) < strength(ends[n][0]) ? ends[n][1] : ends[n][0];
+        joint.serving = strength[1] < strength[0] ? 1 : 0;
+        joint.capacity_floor = capacity_floor * std::min(strength[0], strength[1]);
+        apply(joint);
+        joints_.push_back(joint);
+    }
+}
+
+void JointHinges::apply(const Joint& joint) {
+    for (int k = 0; k < 2; ++k) {
+        const bool serves = k == joint.serving;
+        const std::array<int, 2>& end = joint.ends[k];
+        served_[end[0]].capacity[end[1]] = serves ? 2 : 0;
         // Equal sections yield alike, so their pseudo-springs go soft together: one spring
         // stands for both, or the node's rotation between two nearly free springs would make
         // the tangent nearly singular. A stronger section's end keeps its own (stiffer) spring.
-        const bool equal = strength(ends[n][0]) == strength(ends[n][1]);
-        for (const std::array<int, 2>& end : ends[n]) {
-            const bool serves = &end == &weaker;
-            served[end[0]].capacity[end[1]] = serves ? 2 : 0;
-            served[end[0]].spring[end[1]] = equal ? (serves ? 2 : 0) : 1;
-        }
+        served_[end[0]].spring[end[1]] = joint.equal_sections ? (serves ? 2 : 0) : 1;
     }
-    return served;
 }
+
+int JointHinges::reassign(std::vector<CorotationalBeam>& elements) {
+    int changed = 0;
+    for (Joint& joint : joints_) {
+        const auto report = [&](int k) {
+            const std::array<int, 2>& end = joint.ends[k];
+            return elements[end[0]].law().hinge(end[1]);
+        };
+        const HingeReport served = report(joint.serving), other = report(1 - joint.serving);
+        // The hinge moves to the other end where that end's capacity has fallen below the
+        // serving end's by more than equal_band, measured against no less than a tenth of
+        // M_p(0): near the squash load M_p(N) falls to nothing, and the two ends' capacities
+        // cross as they flow.
+        const bool weaker = served.capacity - other.capacity > equal_band * std::max(served.capacity, joint.capacity_floor);
+        if (!weaker) continue;
+        joint.serving = 1 - joint.serving;
+        apply(joint);
+        for (const std::array<int, 2>& end : joint.ends) elements[end[0]].serve_hinge_ends(served_[end[0]]);
+        ++changed;
+    }
+    return changed;
+}
+
+std::vector<HingeEnds> allocate_hinge_capacity(const Model& model) { return JointHinges(model).ends_served(); }
 
 } // namespace plastica

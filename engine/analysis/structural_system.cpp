@@ -1,7 +1,5 @@
 #include "analysis/structural_system.hpp"
 
-#include "analysis/hinge_allocation.hpp"
-
 #include "element/distributed_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
 #include "element/segmented_plasticity_law.hpp"
@@ -60,13 +58,13 @@ std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, HingeEnds en
 
 StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fixed_load)
     : element_specs_(model.elements), nodes_(model.nodes), foundation_(model), pressure_(model),
-      fixed_load_(fixed_load), load_(fixed_load),
+      joint_hinges_(model), fixed_load_(fixed_load), load_(fixed_load),
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
     for (const FoundationSpring& s : model.springs)
         on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
     driven_by_platens_ = model.driven_by_platens();
-    const std::vector<HingeEnds> ends_served = allocate_hinge_capacity(model);
+    const std::vector<HingeEnds>& ends_served = joint_hinges_.ends_served();
     elements_.reserve(model.elements.size());
     for (std::size_t i = 0; i < model.elements.size(); ++i) {
         const ElementSpec& e = model.elements[i];
@@ -274,6 +272,7 @@ void StructuralSystem::predict_unloading() {
 
 void StructuralSystem::commit() {
     for (CorotationalBeam& e : elements_) e.commit();
+    joint_hinges_.reassign(elements_);
 }
 
 void StructuralSystem::revert() {

@@ -4,6 +4,7 @@
 // free DOFs.
 #pragma once
 
+#include "analysis/hinge_allocation.hpp"
 #include "analysis/step_result.hpp"
 #include "contact/foundation.hpp"
 #include "element/corotational_beam.hpp"
@@ -78,6 +79,8 @@ public:
     void gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const; // no allocation once sized
     void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;
 
+    // Commits every element and spring, then gives each joint's hinge to its weaker end at the
+    // committed axial forces (analysis/hinge_allocation.hpp).
     void commit();
     // The next increment turns the load back: its predictor unloads elastically.
     void predict_unloading();
@@ -99,6 +102,7 @@ private:
     std::vector<std::vector<int>> held_dofs_; // per element: its local DOFs that are supported or prescribed
     Foundation foundation_;
     FollowerPressure pressure_;
+    JointHinges joint_hinges_;
     Eigen::VectorXd fixed_load_;
     Eigen::VectorXd load_;
     int free_count_ = 0;

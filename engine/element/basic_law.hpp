@@ -4,6 +4,8 @@
 // tangent. Path-dependent laws follow the trial/commit protocol.
 #pragma once
 
+#include "element/hinge_ends.hpp"
+
 #include <Eigen/Dense>
 #include <memory>
 #include <vector>
@@ -14,7 +16,8 @@ enum class HingeState { elastic = 0, yielding = 1, plastic = 2, failed = 3 };
 
 // What a plastic hinge reports about one element end.
 struct HingeReport {
-    double utilisation = 0.0; // |M| / M_p(N): 0 elastic … 1 at capacity
+    double utilisation = 0.0; // |M| / M_p(N) of this end at its own N: 0 elastic … 1 at capacity
+    double capacity = 0.0;    // M_p(N) at the end's axial force, on the side it bends to
     HingeState state = HingeState::elastic;
     double ei_ratio = 1.0;    // EI_T / EI of the end section
     double ea_ratio = 1.0;    // EA_T / EA
@@ -41,6 +44,9 @@ public:
     virtual void commit() = 0;
     virtual void revert() = 0;
     virtual bool has_hinges() const { return false; }
+    // Which ends carry capacity rows and pseudo-springs (element/hinge_ends.hpp), re-decided
+    // between steps where two members meet (analysis/hinge_allocation.hpp).
+    virtual void serve_hinge_ends(const HingeEnds& /*ends*/) {}
     virtual HingeReport hinge(int /*end*/) const { return {}; }
     // Sections along the member (committed state); empty for a law without them.
     virtual std::vector<SectionReport> sections() const { return {}; }

@@ -45,6 +45,7 @@ public:
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }
     void predict_unloading() { law_->predict_unloading(); }
     double trial_yield_advance() const { return law_->trial_yield_advance(); }
+    void serve_hinge_ends(const HingeEnds& ends) { law_->serve_hinge_ends(ends); }
 
     BeamForces forces() const;
     double trial_axial_force() const { return q_trial_[0]; }

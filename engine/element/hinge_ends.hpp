@@ -10,6 +10,8 @@ namespace plastica {
 struct HingeEnds {
     std::array<int, 2> capacity{1, 1}; // the ends the capacity rows serve
     std::array<int, 2> spring{1, 1};   // the ends whose pseudo-springs the end's spring stands for
+    bool operator==(const HingeEnds& o) const { return capacity == o.capacity && spring == o.spring; }
+    bool operator!=(const HingeEnds& o) const { return !(*this == o); }
 };
 
 } // namespace plastica

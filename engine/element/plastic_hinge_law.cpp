@@ -201,14 +201,18 @@ void PlasticHingeLaw::commit() {
         HingeReport& report = committed_end_[end];
         const double N = q_t_[0];
         const double m = section_moment(q_t_, end);
-        const double cap = section.hinge_moment_capacity(N, m >= 0.0 ? 1.0 : -1.0);
-        report.utilisation = cap > 0.0 ? std::min(1.0, std::abs(m) / cap) : 1.0;
+        // The capacity on the side the end bends to; unbent, the lower of the two sides.
+        const double cap = m != 0.0 ? section.hinge_moment_capacity(N, m > 0.0 ? 1.0 : -1.0)
+                                    : std::min(section.hinge_moment_capacity(N, 1.0), section.hinge_moment_capacity(N, -1.0));
+        report.capacity = cap;
+        // The true ratio: an end above its capacity must show above 1.
+        report.utilisation = cap > 0.0 ? std::abs(m) / cap : 1.0;
         const bool flowing = std::any_of(active_t_.begin(), active_t_.end(), [&](int r) {
             return (capacity_row(r) && row_end(r) == end) || r == tension || r == compression;
         });
         // A plastic end stays plastic until its moment falls (no flicker between plastic and
         // yielding while it rides the surface without flowing in one step).
-        const bool held = report.state == HingeState::plastic &&
+        const bool held = capacity_at_[end] && report.state == HingeState::plastic &&
                           std::abs(m) >= std::abs(section_moment(q_c_, end)) * (1.0 - 1e-12);
         const bool at_capacity =
             flowing || held || (capacity_at_[end] && capacity_margin(q_t_, end) <= on_capacity * moment_scale_);
@@ -234,7 +238,6 @@ void PlasticHingeLaw::commit() {
             const double sign = m >= 0.0 ? 1.0 : -1.0;
             if (section.solve_for_forces(N, sign * (1.0 - 1e-3) * cap).outcome == ScmOutcome::converged) section.commit();
             else section.revert();
-            report.utilisation = 1.0;
             report.ei_ratio = 0.0;
             report.ea_ratio = 0.0;
             report.state = at_capacity ? HingeState::plastic : HingeState::yielding;
@@ -263,6 +266,40 @@ void PlasticHingeLaw::commit() {
     active_t_ = active_c_;
     gamma_t_.assign(active_t_.size(), 0.0);
     flow_t_.setZero();
+    set_loading_surfaces();
+    loading_c_.erase(std::remove_if(loading_c_.begin(), loading_c_.end(),
+                                    [&](int r) { return !std::isfinite(rows_[r].limit); }),
+                     loading_c_.end());
+}
+
+void PlasticHingeLaw::serve_hinge_ends(const HingeEnds& ends) {
+    if (ends == ends_served_) return;
+    for (int end = 0; end < 2; ++end) {
+        capacity_at_[end] = ends.capacity[end] > 0;
+        // An end that takes over its joint's spring starts from its section's committed
+        // stiffness; at or beyond its capacity the capacity rows govern and it has none (a
+        // spring row beside the capacity row of the same moment would make the two parallel).
+        const bool at_capacity = capacity_at_[end] && capacity_margin(q_c_, end) <= on_capacity * moment_scale_;
+        if (ends.spring[end] > 0 && ends_served_.spring[end] == 0) eta_c_[end] = at_capacity ? 1.0 : committed_end_[end].ei_ratio;
+        if (ends.spring[end] == 0) eta_c_[end] = 1.0;
+    }
+    const auto dropped = [&](int r) { return capacity_row(r) && !capacity_at_[row_end(r)]; };
+    active_c_.erase(std::remove_if(active_c_.begin(), active_c_.end(), dropped), active_c_.end());
+    loading_c_.erase(std::remove_if(loading_c_.begin(), loading_c_.end(), dropped), loading_c_.end());
+    // An end that takes over a joint at its capacity takes over the flow as well: its capacity
+    // row on the side it bends to starts active and gives the next predictor, as the row of the
+    // end it relieves did.
+    for (int end = 0; end < 2; ++end) {
+        if (ends.capacity[end] == 0 || ends_served_.capacity[end] > 0) continue;
+        if (capacity_margin(q_c_, end) > on_capacity * moment_scale_) continue;
+        const int row = (section_moment(q_c_, end) >= 0.0 ? capacity_i : negative_i) + end;
+        if (std::find(active_c_.begin(), active_c_.end(), row) == active_c_.end()) active_c_.push_back(row);
+        if (std::find(loading_c_.begin(), loading_c_.end(), row) == loading_c_.end()) loading_c_.push_back(row);
+    }
+    ends_served_ = ends;
+    linearise_capacity(q_c_[0]); // the predictor's rows, at the committed axial force
+    active_t_ = active_c_;
+    gamma_t_.assign(active_t_.size(), 0.0);
     set_loading_surfaces();
     loading_c_.erase(std::remove_if(loading_c_.begin(), loading_c_.end(),
                                     [&](int r) { return !std::isfinite(rows_[r].limit); }),

@@ -44,6 +44,9 @@ public:
     void commit() override;
     void revert() override;
     bool has_hinges() const override { return true; }
+    // Called at a committed state: an end that stops serving drops its capacity rows (its
+    // plastic deformation stays), an end that starts takes its section's committed stiffness.
+    void serve_hinge_ends(const HingeEnds& ends) override;
     HingeReport hinge(int end) const override { return committed_end_[end]; }
     Eigen::Vector3d plastic_deformation() const override;
     void freeze_states(bool frozen) override { frozen_ = frozen; }

@@ -11,7 +11,8 @@ std::vector<CapacityRow> capacity_table(const FibreSection& section, int points)
     for (int k = 0; k < points; ++k) {
         const double N = -compression + (compression + tension) * k / (points - 1);
         rows.push_back({N, section.moment_capacity(N, 1.0), -section.moment_capacity(N, -1.0),
-                        std::max(0.0, section.first_yield_moment(N))});
+                        std::max(0.0, section.first_yield_moment(N)), section.hinge_moment_capacity(N, 1.0),
+                        -section.hinge_moment_capacity(N, -1.0)});
     }
     return rows;
 }

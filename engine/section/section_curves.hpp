@@ -14,6 +14,10 @@ struct CapacityRow {
     double moment_positive = 0.0;     // fully plastic moment, positive bending
     double moment_negative = 0.0;     // and negative bending (a negative number)
     double first_yield_moment = 0.0;  // positive bending, 0 where N alone yields a fibre
+    // The plastic hinge's capacity: the smooth curve through the polygon's corners
+    // (section/capacity_curve.hpp), which the hinges and their utilisation are measured against.
+    double hinge_moment_positive = 0.0;
+    double hinge_moment_negative = 0.0; // a negative number
 };
 
 // `points` rows from the compressive to the tensile squash load.
