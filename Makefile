@@ -13,8 +13,10 @@ deps:
 $(BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 
+# The build ends by installing the Python module for Debian's python3 (docs/python.md).
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
+	@cmake --install $(BUILD) --component python > /dev/null && echo "import plastica: installed for /usr/bin/python3"
 
 # The headline job: the elastic ring, then the inelastic ring with the elastic curve in its chart.
 ifeq ($(SCENE),models/ring_inelastic.toml)

@@ -16,10 +16,7 @@ namespace plastica {
 CurveWriter::CurveWriter(const std::string& path, const Model& model) : path_(path), model_(&model) {
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
     if (fd_ < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-    std::string header = "step,load_factor,load,control_displacement,iterations,contact_count,hinge_count,"
-                         "plastic_hinge_count,base_reaction,contact_length,negative_pivots,accepted_by,residual";
-    for (const std::string& name : reaction_columns(model)) header += ',' + name;
-    header += '\n';
+    const std::string header = curve_header(model);
     try {
         write_all(fd_, header.data(), header.size(), path_);
     } catch (...) {
@@ -64,17 +61,29 @@ private:
 };
 } // namespace
 
-void CurveWriter::operator()(const StepResult& r) {
+std::string curve_header(const Model& model) {
+    std::string header = "step,load_factor,load,control_displacement,iterations,contact_count,hinge_count,"
+                         "plastic_hinge_count,base_reaction,contact_length,negative_pivots,accepted_by,residual";
+    for (const std::string& name : reaction_columns(model)) header += ',' + name;
+    header += '\n';
+    return header;
+}
+
+std::string curve_row(const Model& model, const StepResult& r) {
     Row row;
     row << r.step << ',' << r.load_factor << ',' << r.load << ',' << r.control_displacement << ','
         << r.iterations << ',' << r.contact_count << ',' << r.hinge_count << ','
         << r.plastic_hinge_count << ',' << r.base_reaction << ',' << r.contact_length << ','
         << r.negative_pivots << ',' << to_string(r.accepted_by) << ',' << r.residual;
-    for (const SupportReaction& s : support_reactions(*model_, r))
+    for (const SupportReaction& s : support_reactions(model, r))
         for (int d = 0; d < dofs_per_node; ++d)
             if (s.reported[d]) row << ',' << s.force[d];
     row << '\n';
-    const std::string& text = row.text();
+    return row.text();
+}
+
+void CurveWriter::operator()(const StepResult& r) {
+    const std::string text = curve_row(*model_, r);
     try {
         write_all(fd_, text.data(), text.size(), path_);
     } catch (...) {

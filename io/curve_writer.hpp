@@ -13,6 +13,10 @@
 
 namespace plastica {
 
+// The header line and a step's row, as the writer writes them (the Python module's curve).
+std::string curve_header(const Model& model);
+std::string curve_row(const Model& model, const StepResult& r);
+
 class CurveWriter {
 public:
     CurveWriter(const std::string& path, const Model& model);

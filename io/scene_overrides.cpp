@@ -113,9 +113,13 @@ Model read_scene(const std::string& path, const std::vector<Override>& overrides
     if (!in) throw SceneError(path, 0, "", "cannot open the scene file");
     std::ostringstream text;
     text << in.rdbuf();
+    return read_scene_text(text.str(), path, overrides);
+}
+
+Model read_scene_text(const std::string& text, const std::string& path, const std::vector<Override>& overrides) {
     toml::table root;
     try {
-        root = toml::parse(text.str(), path);
+        root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         throw SceneError(path, static_cast<int>(e.source().begin.line), "", std::string(e.description()));
     }

@@ -22,5 +22,7 @@ Override parse_override(const std::string& text);
 
 // Reads the scene file with the overrides applied, in order.
 Model read_scene(const std::string& path, const std::vector<Override>& overrides);
+// The same for a scene's text; name_for_errors stands for the file in messages.
+Model read_scene_text(const std::string& text, const std::string& name_for_errors, const std::vector<Override>& overrides);
 
 } // namespace plastica

@@ -10,6 +10,7 @@
 
 #include "analysis/step_result.hpp"
 #include "model/model.hpp"
+#include "step_dataset.hpp"
 #include "vtk_xml_format.hpp"
 
 #include <cstdio>
@@ -53,10 +54,7 @@ private:
     std::string pvd_path_;
     SeriesOptions options_;
     std::vector<std::pair<double, std::string>> entries_; // time, relative file name
-    struct Units {
-        std::string load, displacement; // of the reported load and control displacement
-    } units_;
-    std::set<std::string> arrays_; // the schema's arrays this scene writes, decided once
+    StepDataset dataset_; // the arrays of each step
     std::set<std::string> earlier_steps_; // step files of an earlier run not yet rewritten
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> pvd_{nullptr, &std::fclose};
     long pvd_tail_ = 0; // where the closing tags start

@@ -1,0 +1,31 @@
+// What one step of a result series holds, as named arrays (xml_dataset.hpp): the deformed
+// points, the elements as lines, and the result schema's point, cell and field arrays that the
+// scene has (result_schema.hpp). The series writer serialises it to a VTU file; the Python
+// module hands its arrays to numpy.
+#pragma once
+
+#include "analysis/step_result.hpp"
+#include "model/model.hpp"
+#include "xml_dataset.hpp"
+
+#include <set>
+#include <string>
+
+namespace plastica {
+
+class StepDataset {
+public:
+    explicit StepDataset(const Model& model);
+    // The step's dataset; time is its TimeValue (the series' time of the step).
+    XmlDataset operator()(const StepResult& r, double time) const;
+    bool has(const char* array) const { return arrays_.count(array) > 0; }
+
+private:
+    const Model* model_;
+    struct Units {
+        std::string load, displacement; // of the reported load and control displacement
+    } units_;
+    std::set<std::string> arrays_; // the schema's arrays this scene writes, decided once
+};
+
+} // namespace plastica

@@ -1,0 +1,210 @@
+"""Plastica from Python: run a scene, read its curve and steps as numpy arrays, write and draw.
+
+    import plastica
+    r = plastica.run("models/ring_inelastic.toml", overrides={"material[1].fy": 20000.0})
+    r.status, r.reason          # as run.json: "completed", "limit_load", ... (a stop is no exception)
+    r.curve["load"]             # numpy arrays, one per column of curve.csv
+    r.step(-1).cell["axial_force"]
+    r.write("out/ring")         # the files of `plastica run --no-render`
+    plastica.render(r, "out/ring/frames")
+
+A scene is a path to a TOML file, TOML text, or a dict with the file's structure. Overrides take
+the keys and paths of `plastica run --set`. Errors in a scene raise SceneError (a ValueError),
+located as the command line locates them (file and line, or the key path for a dict).
+docs/python.md has the whole interface.
+"""
+
+import csv
+import io
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+
+from . import _plastica
+from ._locations import DRAWING_PROGRAM
+
+SceneError = _plastica.SceneError
+__version__ = _plastica.version
+
+__all__ = ["run", "render", "read_table", "Result", "Step", "SceneError", "to_toml"]
+
+
+def _toml_key(key):
+    key = str(key)
+    bare = key and all(c.isalnum() or c in "-_" for c in key)
+    return key if bare else json.dumps(key)
+
+
+def _toml_value(value, where):
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        value = float(value)
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    if isinstance(value, str):
+        return json.dumps(value)  # a JSON string is a TOML basic string
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{_toml_key(k)} = {_toml_value(v, f'{where}.{k}')}" for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(v, f"{where}[{i}]") for i, v in enumerate(value)) + "]"
+    raise SceneError(f"{where}: cannot be written in a scene: {type(value).__name__}")
+
+
+def to_toml(scene):
+    """The TOML text of a scene given as a dict: tables for dicts, arrays of tables for lists of dicts."""
+    if not isinstance(scene, dict):
+        raise SceneError(f"scene: expected a dict, got {type(scene).__name__}")
+    lines = []
+    for key, value in scene.items():
+        if not isinstance(value, dict) and not (isinstance(value, list) and value and all(isinstance(v, dict) for v in value)):
+            lines.append(f"{_toml_key(key)} = {_toml_value(value, key)}")
+    for key, value in scene.items():
+        if isinstance(value, dict):
+            lines.append(f"\n[{_toml_key(key)}]")
+            lines += [f"{_toml_key(k)} = {_toml_value(v, f'{key}.{k}')}" for k, v in value.items()]
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            for i, table in enumerate(value):
+                lines.append(f"\n[[{_toml_key(key)}]]")
+                lines += [f"{_toml_key(k)} = {_toml_value(v, f'{key}[{i + 1}].{k}')}" for k, v in table.items()]
+    return "\n".join(lines) + "\n"
+
+
+def _columns(rows):
+    """Columns of CSV rows (the first is the header) as numpy arrays: float where every value is
+    a number, else str."""
+    header, body = rows[0], rows[1:]
+    columns = {}
+    for j, name in enumerate(header):
+        values = [row[j] if j < len(row) else "" for row in body]
+        try:
+            columns[name] = np.array([float(v) for v in values], dtype=float)
+        except ValueError:
+            columns[name] = np.array(values, dtype=str)
+    return columns
+
+
+def read_table(path):
+    """A CSV that Plastica writes (curve.csv, sweep.csv, a study's table) as a dict of numpy
+    arrays, one per column: numbers as float, other columns as str. pandas.DataFrame(...) takes it."""
+    with open(path, encoding="utf-8", newline="") as f:
+        return _columns([row for row in csv.reader(f) if row])
+
+
+class Step:
+    """One converged step: `points` (n × 3, deformed), `lines` (the elements' node pairs), and the
+    result schema's arrays by name: `point[...]` per node, `cell[...]` per element, `field[...]`."""
+
+    def __init__(self, arrays):
+        self.points = arrays["points"]
+        self.lines = arrays["lines"]
+        self.point = arrays["point"]
+        self.cell = arrays["cell"]
+        self.field = {k: (v[0] if len(v) == 1 else v) for k, v in arrays["field"].items()}
+
+    def __repr__(self):
+        return f"<plastica.Step {int(self.field.get('step', -1))}: {len(self.points)} nodes, {len(self.lines)} elements>"
+
+
+class Result:
+    """A finished run (completed or stopped: see `status` and `reason`)."""
+
+    def __init__(self, run):
+        self._run = run
+        self.status = run.status
+        self.reason = run.reason
+        self.curve = _columns([row for row in csv.reader(io.StringIO(run.curve_csv)) if row])
+        self._report = None
+
+    @property
+    def report(self):
+        """What run.json holds, as a dict."""
+        if self._report is None:
+            self._report = json.loads(self._run.report_json)
+        return self._report
+
+    @property
+    def steps(self):
+        """How many steps the run kept (the unloaded state, step 0, included)."""
+        return self._run.step_count
+
+    def step(self, k):
+        """Step k of those kept (negative k counts from the last)."""
+        return Step(self._run.step_arrays(k))
+
+    def write(self, folder):
+        """Writes the VTU/PVD series, curve.csv and run.json into folder, as `plastica run --no-render`."""
+        os.makedirs(folder, exist_ok=True)
+        self._run.write(os.fspath(folder))
+        return folder
+
+    def dataframe(self):
+        """The curve as a pandas DataFrame (pandas is needed for this alone)."""
+        import pandas
+        return pandas.DataFrame(self.curve)
+
+    def _repr_png_(self):
+        """The load–displacement chart, as Jupyter shows a Result (matplotlib, no pyplot state)."""
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+        first = self.step(0).field
+        fig = Figure(figsize=(6, 4), dpi=100)
+        FigureCanvasAgg(fig)
+        ax = fig.add_subplot()
+        ax.plot(self.curve["control_displacement"], self.curve["load"], color="#1f4e99")
+        def label(name, unit):
+            text, unit = str(first.get(name, name.replace("_label", ""))), str(first.get(unit, ""))
+            return f"{text} ({unit})" if unit else text
+        ax.set_xlabel(label("displacement_label", "displacement_unit"))
+        ax.set_ylabel(label("load_label", "load_unit"))
+        ax.set_title(f"{first.get('title', self._run.scene_name)}: {self.status}")
+        ax.grid(True, alpha=0.3)
+        fig.tight_layout()
+        out = io.BytesIO()
+        fig.savefig(out, format="png")
+        return out.getvalue()
+
+    def __repr__(self):
+        return f"<plastica.Result {self._run.scene_name}: {self.status}, {self.steps} steps>"
+
+
+def _scene_source(scene):
+    if isinstance(scene, dict):
+        return to_toml(scene), True, ""
+    if isinstance(scene, os.PathLike):
+        return os.fspath(scene), False, ""
+    if isinstance(scene, str):
+        if "\n" in scene or "=" in scene:
+            return scene, True, "scene.toml"
+        return scene, False, ""
+    raise SceneError(f"scene: expected a path, TOML text or a dict, got {type(scene).__name__}")
+
+
+def run(scene, overrides=None):
+    """Runs a scene (a path, TOML text or a dict) with overrides {key path: value}, as
+    `plastica run SCENE --set KEY=VALUE ...`. Returns a Result; the GIL is released while it runs."""
+    source, is_text, name = _scene_source(scene)
+    pairs = [(str(k), _toml_value(v, str(k))) for k, v in (overrides or {}).items()]
+    return Result(_plastica.run_scene(source, is_text, name, pairs))
+
+
+def render(result, folder, size=(1280, 720), options=()):
+    """Draws a run's pictures into folder as the render stage draws them (frames, chart.png,
+    contact sheet, animation): the series is written beside them (folder/series) and drawn by
+    `plastica render`. Extra command-line options go in `options`."""
+    folder = os.fspath(folder)
+    series = os.path.join(folder, "series")
+    result.write(series)
+    command = [DRAWING_PROGRAM, "render", series, "-o", folder, "--size", f"{int(size[0])}x{int(size[1])}", "-q", *options]
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"plastica render failed ({done.returncode}): {done.stderr.strip()}")
+    return folder

@@ -1,0 +1,181 @@
+// The Python extension `plastica._plastica`: reads a scene (a file, TOML text, or the TOML text
+// of a dict), runs it with the GIL released, and keeps every converged step, so that Python gets
+// the curve and run.json as the command line writes them, each step's arrays by the result
+// schema's names (io/step_dataset.hpp), and the same files on request. python/plastica/ wraps it.
+#include "analysis/path_following.hpp"
+#include "curve_writer.hpp"
+#include "run_report.hpp"
+#include "scene_overrides.hpp"
+#include "scene_reader.hpp"
+#include "step_dataset.hpp"
+#include "vtu_series_writer.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+using namespace plastica;
+
+namespace {
+
+// One run: the model, its summary, every converged step, and the texts the CLI would write.
+struct Run {
+    Model model;
+    std::string scene_file;
+    std::vector<Override> overrides;
+    RunSummary summary;
+    std::vector<StepResult> steps;
+    std::string curve_csv;
+    RunReport report;
+
+    std::string report_json() const {
+        RunReport r = report;
+        r.model = &model;
+        return to_json(r);
+    }
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Reads and runs a scene: `source` is a path, or TOML text when `name` is given (then `name`
+// stands for the file in messages; "" for a dict, whose errors name key paths only).
+std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const std::string& name,
+                               const std::vector<std::pair<std::string, std::string>>& overrides) {
+    auto run = std::make_shared<Run>();
+    for (const auto& [path, value] : overrides) run->overrides.push_back({path, value});
+    const auto t0 = std::chrono::steady_clock::now();
+    {
+        py::gil_scoped_release unlocked;
+        try {
+            run->model = is_text ? read_scene_text(source, name.empty() ? "scene" : name, run->overrides)
+                                 : read_scene(source, run->overrides);
+        } catch (const SceneError& e) {
+            // A dict has no lines: its errors name the key path alone.
+            if (is_text && name.empty()) throw SceneError(e.key().empty() ? "scene" : e.key(), 0, "", e.reason());
+            throw;
+        }
+        run->scene_file = is_text ? (name.empty() ? "(dict)" : name) : source;
+        const double read_seconds = seconds_since(t0);
+        PathFollowing analysis(run->model);
+        if (const std::string m = analysis.initial_mechanism(); !m.empty()) throw SceneError(run->scene_file, 0, "", m);
+        RunReport& report = run->report;
+        report.scene_file = run->scene_file;
+        for (const Override& o : run->overrides) report.overrides.emplace_back(o.path, o.value);
+        run->curve_csv = curve_header(run->model);
+        const auto t1 = std::chrono::steady_clock::now();
+        report.summary = analysis.run({[&](const StepResult& r) {
+            run->curve_csv += curve_row(run->model, r);
+            report.last = final_state(run->model, r);
+            if (r.load > report.peak_load) {
+                report.peak_load = r.load;
+                report.peak_load_displacement = r.control_displacement;
+            }
+            run->steps.push_back(r);
+        }});
+        report.stage_seconds = {{"read", read_seconds}, {"analysis", seconds_since(t1)}};
+        run->summary = report.summary;
+    }
+    return run;
+}
+
+// Writes what `plastica run --no-render` writes: the VTU/PVD series, curve.csv and run.json.
+void write_run(const Run& run, const std::string& folder) {
+    namespace fs = std::filesystem;
+    py::gil_scoped_release unlocked;
+    fs::create_directories(folder);
+    {
+        VtuSeriesWriter series(run.model, folder);
+        for (const StepResult& s : run.steps) series(s);
+        series.finish();
+    }
+    {
+        std::ofstream curve(fs::path(folder) / "curve.csv", std::ios::binary);
+        curve << run.curve_csv;
+    }
+    write_run_report((fs::path(folder) / "run.json").string(), [&] {
+        RunReport r = run.report;
+        r.model = &run.model;
+        return r;
+    }());
+}
+
+py::array to_numpy(const XmlArray& a) {
+    const std::size_t tuples = a.tuples();
+    std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(tuples)};
+    if (a.components > 1) shape.push_back(a.components);
+    if (const auto* d = std::get_if<std::vector<double>>(&a.values)) {
+        py::array_t<double> out(shape);
+        std::copy(d->begin(), d->end(), out.mutable_data());
+        return std::move(out);
+    }
+    if (const auto* i = std::get_if<std::vector<std::int32_t>>(&a.values)) {
+        py::array_t<std::int32_t> out(shape);
+        std::copy(i->begin(), i->end(), out.mutable_data());
+        return std::move(out);
+    }
+    return py::array(py::cast(std::get<std::vector<std::string>>(a.values)));
+}
+
+py::dict arrays(const std::vector<XmlArray>& list) {
+    py::dict d;
+    for (const XmlArray& a : list) d[py::str(a.name)] = to_numpy(a);
+    return d;
+}
+
+// One step's arrays: points (n × 3, deformed), lines (elements' node pairs), and the point, cell
+// and field arrays by the result schema's names.
+py::dict step_arrays(const Run& run, int k) {
+    if (k < 0) k += static_cast<int>(run.steps.size());
+    if (k < 0 || k >= static_cast<int>(run.steps.size())) throw py::index_error("no step " + std::to_string(k));
+    const StepResult& s = run.steps[static_cast<std::size_t>(k)];
+    const XmlDataset grid = StepDataset(run.model)(s, static_cast<double>(s.step));
+    py::dict out;
+    py::array_t<double> points({static_cast<py::ssize_t>(grid.point_count()), py::ssize_t{3}});
+    std::copy(grid.points.begin(), grid.points.end(), points.mutable_data());
+    py::array_t<std::int64_t> lines({static_cast<py::ssize_t>(grid.lines.size()), py::ssize_t{2}});
+    for (std::size_t e = 0; e < grid.lines.size(); ++e)
+        for (int j = 0; j < 2; ++j) lines.mutable_at(e, j) = grid.lines[e][static_cast<std::size_t>(j)];
+    out["points"] = points;
+    out["lines"] = lines;
+    out["point"] = arrays(grid.point_data);
+    out["cell"] = arrays(grid.cell_data);
+    out["field"] = arrays(grid.field_data);
+    return out;
+}
+
+} // namespace
+
+PYBIND11_MODULE(_plastica, m) {
+    m.doc() = "Plastica's engine: co-rotational beams with plastic hinges, fibre sections and contact";
+    static py::exception<SceneError> scene_error(m, "SceneError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const SceneError& e) {
+            scene_error(e.what());
+        }
+    });
+    py::class_<Run, std::shared_ptr<Run>>(m, "Run")
+        .def_property_readonly("status", [](const Run& r) { return std::string(to_string(r.summary.status)); })
+        .def_property_readonly("reason", [](const Run& r) { return r.summary.reason; })
+        .def_property_readonly("scene_name", [](const Run& r) { return r.model.name; })
+        .def_property_readonly("curve_csv", [](const Run& r) { return r.curve_csv; })
+        .def_property_readonly("report_json", &Run::report_json)
+        .def_property_readonly("step_count", [](const Run& r) { return r.steps.size(); })
+        .def("step_arrays", &step_arrays, py::arg("k"))
+        .def("write", &write_run, py::arg("folder"));
+    m.def("run_scene", &run_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"));
+    m.attr("version") = PLASTICA_VERSION;
+}
