@@ -194,6 +194,55 @@ std::string PathFollowing::initial_mechanism() {
     return s.str();
 }
 
+std::string PathFollowing::probe_contact_mechanism(const Eigen::VectorXd& u_converged, double lambda_converged) {
+    if (const std::string m = contact_mechanism(); !m.empty()) return m;
+    if (committed_contact_.empty() || system_.free_count() == 0) return {};
+    // The failed iterate may have wandered anywhere: look where the load first carries the
+    // converged state instead, a small step along the tangent's response to it.
+    system_.evaluate(u_converged, ubar_, lambda_converged, false);
+    if (!solver_.factorize(system_.tangent())) return {};
+    const Eigen::VectorXd response = solver_.solve(system_.gather(system_.load()) - system_.coupling());
+    const double largest = response.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0) || !std::isfinite(largest)) return {};
+    double size = 0.0;
+    for (const Node& n : model_.nodes) size = std::max({size, std::abs(n.x), std::abs(n.y)});
+    Eigen::VectorXd step = Eigen::VectorXd::Zero(u_converged.size());
+    system_.scatter(response * (1e-6 * std::max(size, 1.0) / largest), step);
+    system_.evaluate(u_converged + step, ubar_, lambda_converged, false);
+    return contact_mechanism();
+}
+
+void PathFollowing::remember_contact() {
+    const std::vector<SpringState>& states = system_.foundation().states();
+    committed_contact_.resize(states.size());
+    for (std::size_t k = 0; k < states.size(); ++k) committed_contact_[k] = states[k].unilateral && states[k].active;
+}
+
+std::string PathFollowing::contact_mechanism() const {
+    const std::vector<SpringState>& states = system_.foundation().states();
+    if (states.size() != model_.springs.size()) return {};
+    std::vector<bool> in_contact(states.size());
+    std::vector<std::size_t> lost;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+        in_contact[k] = !states[k].unilateral || states[k].active;
+        // Lost since the last converged step: touching then (a closed gap), open now.
+        if (states[k].unilateral && !states[k].active && committed_contact_.size() == states.size() && committed_contact_[k])
+            lost.push_back(k);
+    }
+    if (lost.empty()) return {};
+    const std::string motion = unrestrained_rigid_motion(model_, &in_contact);
+    if (motion.empty()) return {};
+    std::ostringstream s;
+    s << "contact with the base was lost at " << lost.size() << (lost.size() == 1 ? " node" : " nodes") << " (";
+    for (std::size_t i = 0; i < lost.size() && i < 4; ++i) {
+        const Node& n = model_.nodes[model_.springs[lost[i]].node];
+        s << (i ? ", " : "") << point_text(model_, n.x, n.y);
+    }
+    s << (lost.size() > 4 ? ", …" : "") << "), and nothing else holds it: " << motion
+      << ". Hold it with a support or a spring, or drive it by a prescribed displacement";
+    return s.str();
+}
+
 RoundOffFloor PathFollowing::round_off_floor() const {
     return system_.round_off_floor(u_, lambda_);
 }
@@ -238,6 +287,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     // Step 0: the unloaded state (springs evaluated so the contact set is known).
     system_.evaluate(u_, ubar_, lambda_, false);
     system_.commit();
+    remember_contact();
     if (system_.free_count() > 0 && solver_.factorize(system_.tangent())) {
         const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
         initial_flexibility_ = f.dot(solver_.solve(f));
@@ -310,6 +360,9 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             // Not before the first step: the unloaded tangent was found positive definite, so a
             // negative pivot there is round-off, not a limit at load factor 0.
             const bool can_be_limit = a.scheme == Scheme::load_control && step_ > 0;
+            // A base the structure has left holds nothing: if that frees a rigid motion, the
+            // failure is a mechanism, named with the contact that released it.
+            const std::string mechanism = giving_up ? probe_contact_mechanism(u_saved, lambda_saved) : std::string();
             if (giving_up && can_be_limit && outcome.failure != NewtonFailure::non_finite) {
                 if (outcome.negative_pivots_seen > 0)
                     limit_evidence_ = "the tangent beyond it has " + std::to_string(outcome.negative_pivots_seen) +
@@ -330,6 +383,9 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
                 summary.status = RunStatus::non_finite;
                 why << "non-finite state in step " << step_ + 1;
                 if (!system_.non_finite_where().empty()) why << " at " << system_.non_finite_where();
+            } else if (!mechanism.empty()) {
+                why << "the structure became a mechanism in step " << step_ + 1 << " at load factor " << lambda_ << ": "
+                    << mechanism;
             } else if (beyond_limit || (can_be_limit && tangent_shows_limit())) {
                 summary.status = RunStatus::limit_load;
                 why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
@@ -373,6 +429,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
         refined_advance_ = 0.0;
         system_.commit();
+        remember_contact();
         failures_in_step_ = 0;
         steps_missing_arc_ = missed_arc_in_step_ ? steps_missing_arc_ + 1 : 0;
         missed_arc_in_step_ = false;

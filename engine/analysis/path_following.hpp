@@ -82,6 +82,14 @@ private:
     RoundOffFloor round_off_floor() const;
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;
+    // Where the last evaluation left a base that the last converged step touched, and that
+    // frees a rigid motion: the contact lost and the motion, in words; else empty.
+    std::string contact_mechanism() const;
+    // The same where the failed iterate does not show it, a small step along the load's
+    // response from the converged state (the system is left there: revert after).
+    std::string probe_contact_mechanism(const Eigen::VectorXd& u_converged, double lambda_converged);
+    void remember_contact(); // after a commit
+    std::vector<bool> committed_contact_; // per foundation spring: touching at the last converged step
     double control_value(const Eigen::VectorXd& u) const;
     // The converged state as a step's result, in storage kept from step to step (the
     // observers copy what they keep). with_sections: RunControl::report_sections of the run.

@@ -27,7 +27,17 @@ private:
 
 } // namespace
 
-std::string unrestrained_rigid_motion(const Model& model) {
+std::string point_text(const Model& model, double x, double y) {
+    double size = 0.0;
+    for (const Node& n : model.nodes) size = std::max({size, std::abs(n.x), std::abs(n.y)});
+    const auto clean = [&](double v) { return std::abs(v) <= 1e-9 * size ? 0.0 : v; };
+    std::ostringstream s;
+    s.precision(6);
+    s << "[" << clean(x) << ", " << clean(y) << "]";
+    return s.str();
+}
+
+std::string unrestrained_rigid_motion(const Model& model, const std::vector<bool>* in_contact) {
     const int n = static_cast<int>(model.nodes.size());
     Parts parts(n);
     for (const ElementSpec& e : model.elements) parts.join(e.node_i, e.node_j);
@@ -64,8 +74,10 @@ std::string unrestrained_rigid_motion(const Model& model) {
                     if (s.fixed[d]) hold(mode(s.node, d));
         for (const PrescribedDisplacement& p : model.prescribed)
             if (in_part(p.node)) hold(mode(p.node, p.dof));
-        for (const FoundationSpring& s : model.springs) {
+        for (std::size_t k = 0; k < model.springs.size(); ++k) {
+            const FoundationSpring& s = model.springs[k];
             if (!in_part(s.node)) continue;
+            if (s.unilateral && in_contact && !(*in_contact)[k]) continue;
             if (s.unilateral) {
                 // A compression-only spring holds along its normal (it is what rests the
                 // structure on its base).
@@ -82,12 +94,12 @@ std::string unrestrained_rigid_motion(const Model& model) {
         const Eigen::Vector3d free = eig.eigenvectors().col(0);
         const Node& at = model.nodes[nodes.front()];
         std::ostringstream s;
-        s << "the part of the structure with the node at [" << at.x << ", " << at.y << "] (" << nodes.size()
+        s << "the part of the structure with the node at " << point_text(model, at.x, at.y) << " (" << nodes.size()
           << (nodes.size() == 1 ? " node" : " nodes") << ") can move as a rigid body: ";
         if (std::abs(free[2]) < 1e-6)
             s << "a translation along [" << free[0] / free.head<2>().norm() << ", " << free[1] / free.head<2>().norm() << "]";
-        else
-            s << "a rotation" << (free.head<2>().norm() > 1e-6 ? " with a translation" : " about its centre");
+        else // the point that does not move: u = t + ω × (x − c) vanishes there
+            s << "a rotation about " << point_text(model, cx - size * free[1] / free[2], cy + size * free[0] / free[2]);
         return s.str();
     }
     return {};

@@ -8,10 +8,16 @@
 #include "model/model.hpp"
 
 #include <string>
+#include <vector>
 
 namespace plastica {
 
-// Empty when every part is held; else which part moves and how, in words.
-std::string unrestrained_rigid_motion(const Model& model);
+// Empty when every part is held; else which part moves and how, in words (a translation's
+// direction, a rotation's centre). in_contact: per foundation spring, whether a unilateral one
+// touches its base (those that do not hold nothing); null: every spring holds.
+std::string unrestrained_rigid_motion(const Model& model, const std::vector<bool>* in_contact = nullptr);
+
+// "[x, y]" of a point for messages: six digits, round-off against the model's size shown as 0.
+std::string point_text(const Model& model, double x, double y);
 
 } // namespace plastica

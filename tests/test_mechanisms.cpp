@@ -1,0 +1,72 @@
+// Mechanisms are named for what they are: the rigid motion (a translation's direction, a
+// rotation's centre) and, where it appears during a run, the contact whose loss released it
+// (engine/model/rigid_motions.hpp, engine/analysis/path_following.hpp), never the round-off
+// advice that a tolerance cannot be met.
+#include "analysis_helpers.hpp"
+#include "model/rigid_motions.hpp"
+#include "scene_overrides.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace plastica;
+using namespace plastica::testing;
+
+TEST_CASE("A ring pulled off its base stops as a mechanism, naming the contact lost and the free translation", "[mechanism]") {
+    std::string scene = scene_file_text("models/ring_elastic.toml");
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        REQUIRE(scene.find(from) != std::string::npos);
+        scene.replace(scene.find(from), from.size(), to);
+    };
+    replace("fy = -1.0", "fy = 1.0");
+    replace("control_sign = -1.0", "control_sign = 1.0");
+    for (const char* scheme : {"displacement_control", "arc_length"}) {
+        CAPTURE(scheme);
+        if (std::string(scheme) == "arc_length") {
+            replace("scheme = \"displacement_control\"", "scheme = \"arc_length\"");
+        }
+        const Run r = run_scene(scene);
+        CHECK(r.summary.status == RunStatus::no_convergence);
+        CHECK_THAT(r.summary.reason, Catch::Contains("the structure became a mechanism in step 1") &&
+                                         Catch::Contains("contact with the base was lost at 1 node ([0, 0])") &&
+                                         Catch::Contains("a translation along [0, 1]"));
+        CHECK_THAT(r.summary.reason, !Catch::Contains("round-off"));
+    }
+}
+
+TEST_CASE("The same ring pressed onto its base is held: no mechanism is named", "[mechanism]") {
+    const Run r = run_model(read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/ring_elastic.toml", {{"analysis.target_displacement", "5.0"}}));
+    CHECK(r.summary.status == RunStatus::completed);
+}
+
+TEST_CASE("A beam on one pin turns about that pin", "[mechanism]") {
+    const Model m = read_scene_text(R"(
+[scene]
+name = "pinned"
+[[material]]
+name = "steel"
+E = 2.1e8
+fy = 2.35e5
+[[section]]
+name = "s"
+material = "steel"
+shape = "rectangle"
+b = 0.1
+h = 0.2
+[[line]]
+start = [2.0, 1.0]
+end = [6.0, 1.0]
+elements = 4
+section = "s"
+[[support]]
+at = [2.0, 1.0]
+fix = ["ux", "uy"]
+[[load]]
+at = [6.0, 1.0]
+fy = -1.0
+[analysis]
+scheme = "load_control"
+increment = 0.1
+target_load_factor = 1.0
+)", "pinned.toml");
+    CHECK_THAT(unrestrained_rigid_motion(m), Catch::Contains("can move as a rigid body: a rotation about [2, 1]"));
+}
