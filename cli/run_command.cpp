@@ -13,6 +13,7 @@
 #include "run_report.hpp"
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
+#include "scene_warnings.hpp"
 #include "vtu_series_writer.hpp"
 
 #include <atomic>
@@ -84,6 +85,7 @@ int run_command(const Args& args) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;
     }
+    for (const std::string& warning : scene_warnings(model)) std::cerr << "plastica: " << scene_file << ": warning: " << warning << "\n";
     const int every = vm["every"].as<int>();
     render::RenderOptions render_options;
     if (auto code = read_render_options(vm, render_options)) return *code;

@@ -1,5 +1,7 @@
 #include "run_report.hpp"
 
+#include "scene_warnings.hpp"
+
 #include "atomic_file.hpp"
 #include "analysis/support_reactions.hpp"
 
@@ -46,6 +48,8 @@ std::string to_json(const RunReport& r) {
     }
     j["status"] = to_string(r.summary.status);
     j["reason"] = r.summary.reason;
+    // What looks like a unit mistake (io/scene_warnings.hpp): the run went ahead.
+    if (const std::vector<std::string> warnings = scene_warnings(*r.model); !warnings.empty()) j["warnings"] = warnings;
     j["steps"] = r.summary.steps;
     j["iterations"] = r.summary.iterations;
     j["cut_steps"] = r.summary.cut_steps;

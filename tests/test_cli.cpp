@@ -760,3 +760,34 @@ TEST_CASE("plastica report writes one page a browser shows whole, and compare --
     CHECK(bad.code == 2);
     CHECK_THAT(bad.output, Catch::Contains("holds no run.json"));
 }
+
+TEST_CASE("Likely unit mistakes are warned of on stderr and in run.json, and the run goes on", "[cli][warnings]") {
+    // fy in MPa beside E in kN/m² (fy/E = 1.7e-6), and a section 200 deep on a frame in metres.
+    const fs::path dir = scratch("warnings");
+    fs::create_directories(dir);
+    std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/tests/frames/portal_weak_columns.toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string scene = text.str();
+    const auto variant = [&](const std::string& from, const std::string& to, const std::string& name) {
+        std::string s = scene;
+        REQUIRE(s.find(from) != std::string::npos);
+        s.replace(s.find(from), from.size(), to);
+        const fs::path file = dir / (name + ".toml");
+        std::ofstream(file) << s;
+        return file.string();
+    };
+    const Result mpa = command("run " + variant("fy = 3.55e5", "fy = 355.0", "mpa") + " --curves-only -q -o " + (dir / "mpa").string());
+    CHECK(mpa.code == 0);
+    CHECK_THAT(mpa.output, Catch::Contains("warning: section 'HEB200': its material's fy/E is 1.69e-06, outside 1e-5 … 2e-2"));
+    const nlohmann::json report = read_json(dir / "mpa" / "run.json");
+    REQUIRE(report.contains("warnings"));
+    CHECK(report["warnings"].size() == 2u);
+    const Result mm = command("run " + variant("depth = 0.2\n", "depth = 200.0\n", "mm") + " --curves-only -q --set analysis.max_steps=3 -o " +
+                              (dir / "mm").string());
+    CHECK_THAT(mm.output, Catch::Contains("warning: section 'HEB200': 200 deep on a structure 7.21 across"));
+    // The shipped scenes raise none.
+    const Result ring = command("run " + model("ring_inelastic.toml") + " --curves-only -q --set analysis.max_steps=2 -o " + (dir / "ring").string());
+    CHECK_THAT(ring.output, !Catch::Contains("warning"));
+    CHECK_FALSE(read_json(dir / "ring" / "run.json").contains("warnings"));
+}
