@@ -19,6 +19,7 @@ import io
 import json
 import math
 import os
+import re
 import subprocess
 
 import numpy as np
@@ -188,12 +189,31 @@ def _scene_source(scene):
     raise SceneError(f"scene: expected a path, TOML text or a dict, got {type(scene).__name__}")
 
 
+def _named_path(message, scene):
+    """A dict's error names a table by its name where it has one: section[HEB200].depth, not section[1].depth."""
+    match = re.match(r"^([A-Za-z_]+)\[(\d+)\](.*)$", message, re.S)
+    if not match:
+        return message
+    table, index, rest = match.group(1), int(match.group(2)), match.group(3)
+    entries = scene.get(table)
+    if isinstance(entries, list) and 1 <= index <= len(entries) and isinstance(entries[index - 1], dict):
+        name = entries[index - 1].get("name")
+        if isinstance(name, str) and name:
+            return f"{table}[{name}]{rest}"
+    return message
+
+
 def run(scene, overrides=None):
     """Runs a scene (a path, TOML text or a dict) with overrides {key path: value}, as
     `plastica run SCENE --set KEY=VALUE ...`. Returns a Result; the GIL is released while it runs."""
     source, is_text, name = _scene_source(scene)
     pairs = [(str(k), _toml_value(v, str(k))) for k, v in (overrides or {}).items()]
-    return Result(_plastica.run_scene(source, is_text, name, pairs))
+    try:
+        return Result(_plastica.run_scene(source, is_text, name, pairs))
+    except SceneError as error:
+        if isinstance(scene, dict):
+            raise SceneError(_named_path(str(error), scene)) from None
+        raise
 
 
 def render(result, folder, size=(1280, 720), options=()):

@@ -82,7 +82,10 @@ def test_a_stop_is_a_status(source):
 def test_scene_errors_are_located(source):
     scene = tomllib.loads((source / "models/gallery/portal_frame.toml").read_text())
     scene["section"][0]["depth"] = -0.3
-    with pytest.raises(plastica.SceneError, match=r"^section\[1\]\.depth: expected a positive number"):
+    with pytest.raises(plastica.SceneError, match=r"^section\[HEB300\]\.depth: expected a positive number"):
+        plastica.run(scene)
+    del scene["section"][0]["name"]  # no name: the index
+    with pytest.raises(plastica.SceneError, match=r"^section\[1\]"):
         plastica.run(scene)
     with pytest.raises(ValueError, match=r"scene.toml:3: 'scene.bogus': unknown key"):
         plastica.run('[scene]\nname = "x"\nbogus = 1\n')
