@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -36,13 +37,10 @@ struct Run {
     RunSummary summary;
     std::vector<StepResult> steps;
     std::string curve_csv;
-    RunReport report;
+    RunReport report; // its model is this run's
+    std::optional<StepDataset> dataset; // each step's arrays
 
-    std::string report_json() const {
-        RunReport r = report;
-        r.model = &model;
-        return to_json(r);
-    }
+    std::string report_json() const { return to_json(report); }
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -67,6 +65,8 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
             throw;
         }
         run->scene_file = is_text ? (name.empty() ? "(dict)" : name) : source;
+        run->dataset.emplace(run->model);
+        run->report.model = &run->model;
         const double read_seconds = seconds_since(t0);
         PathFollowing analysis(run->model);
         if (const std::string m = analysis.initial_mechanism(); !m.empty()) throw SceneError(run->scene_file, 0, "", m);
@@ -104,11 +104,7 @@ void write_run(const Run& run, const std::string& folder) {
         std::ofstream curve(fs::path(folder) / "curve.csv", std::ios::binary);
         curve << run.curve_csv;
     }
-    write_run_report((fs::path(folder) / "run.json").string(), [&] {
-        RunReport r = run.report;
-        r.model = &run.model;
-        return r;
-    }());
+    write_run_report((fs::path(folder) / "run.json").string(), run.report);
 }
 
 py::array to_numpy(const XmlArray& a) {
@@ -140,7 +136,7 @@ py::dict step_arrays(const Run& run, int k) {
     if (k < 0) k += static_cast<int>(run.steps.size());
     if (k < 0 || k >= static_cast<int>(run.steps.size())) throw py::index_error("no step " + std::to_string(k));
     const StepResult& s = run.steps[static_cast<std::size_t>(k)];
-    const XmlDataset grid = StepDataset(run.model)(s, static_cast<double>(s.step));
+    const XmlDataset grid = (*run.dataset)(s, static_cast<double>(s.step));
     py::dict out;
     py::array_t<double> points({static_cast<py::ssize_t>(grid.point_count()), py::ssize_t{3}});
     std::copy(grid.points.begin(), grid.points.end(), points.mutable_data());
