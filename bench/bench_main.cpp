@@ -1,4 +1,4 @@
-// plastica_bench: the figures of the README's performance table. Run through `make bench`.
+// plastica_bench: the figures of docs/performance.md's table. Run through `make bench`.
 #include <benchmark/benchmark.h>
 
 #include <malloc.h>

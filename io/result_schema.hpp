@@ -1,4 +1,4 @@
-// The result schema: the one list of what a result series holds (DESIGN §2). Every array of a
+// The result schema: the one list of what a result series holds. Every array of a
 // step's VTU and of base.vtp, with where it lives, its type and components, what it measures and
 // which scenes have it, and the codes of the integer states. The VTU writer, the render stage,
 // the README's table (`plastica schema` prints it; a test compares) and the tests read it, so a
@@ -19,7 +19,7 @@ enum class Where { point, cell, field, base };
 enum class Type { float64, int32, text };
 // What an array's values measure, for their unit.
 enum class Quantity { none, length, rotation, force, moment, curvature, reported_load, reported_displacement };
-// Which scenes write an array (DESIGN §5: only what a scene needs).
+// Which scenes write an array: only what a scene needs (no empty arrays).
 enum class When {
     always,
     supported_or_prescribed, // a support or a prescribed displacement

@@ -5,7 +5,7 @@
 // step index, or the cumulative arc length); the load factor is field data. The base line and
 // spring anchors go once to base.vtp, listed as part 1 of every time step.
 // Arrays are those of the result schema (result_schema.hpp), written only where the scene has
-// them (DESIGN §5).
+// them.
 #pragma once
 
 #include "analysis/step_result.hpp"

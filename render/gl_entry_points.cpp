@@ -1,4 +1,4 @@
-// Two GL entry points that every rendering executable must define itself (DESIGN §6). They are
+// Two GL entry points that every rendering executable must define itself. They are
 // linked as object code with ENABLE_EXPORTS so that the dynamic linker resolves GLEW's and VTK's
 // calls to them rather than to glvnd's:
 //  - glXGetProcAddress[ARB]: Debian's GLEW asks GLX for every GL function; glvnd would answer with

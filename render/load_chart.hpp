@@ -1,5 +1,5 @@
 // A load–displacement chart (VTK's vtkChartXY) in a vtkContextActor on a renderer of our own:
-// DESIGN §6 rules out vtkContextView here, which would create an X window. Lines and points
+// vtkContextView is ruled out here: it would create an X window (offscreen_context.hpp). Lines and points
 // are added once; their data can be replaced between frames (the curve so far, the current
 // step). Axes are fixed by the caller so the chart does not rescale from frame to frame.
 #pragma once

@@ -1,5 +1,5 @@
 // An OpenGL context drawn by Mesa's software rasteriser (llvmpipe) through OSMesa, on a pixel
-// buffer this object owns: no X server, no DISPLAY (DESIGN §6). Only offscreen_context.cpp
+// buffer this object owns: no X server, no DISPLAY. Only offscreen_context.cpp
 // includes GL/osmesa.h, because GLEW's header (used elsewhere) breaks it.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The render stage as one call: read a result series (DESIGN §1: the VTU/PVD files are the only
+// The render stage as one call: read a result series (the VTU/PVD files are the only
 // input), draw every k-th step into frames/frame_NNNNNN.png (NNNNNN is the step number), then
 // chart.png, contact_sheet.png and <scene>.gif. Steps are read and drawn one at a time; the PNG of
 // one frame is encoded on a second thread while the next one draws.

@@ -1,4 +1,4 @@
-// A result series as the engine wrote it (DESIGN §5): the PVD's steps (part 0, one VTU each) and
+// A result series as the engine wrote it: the PVD's steps (part 0, one VTU each) and
 // the optional base file (part 1), read only through VTK's XML parser and readers. Every failure
 // names the file and says why: a missing file, a truncated VTU, or a file Plastica did not write.
 #pragma once

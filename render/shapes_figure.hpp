@@ -1,6 +1,6 @@
 // Deformed configurations at several load levels drawn over each other in one picture, one
-// panel per run side by side at one scale (an elastic and an inelastic ring): the seed's second
-// figure. `plastica render SERIES --shapes d1,d2,… [--overlay OTHER]` writes shapes.png.
+// panel per run side by side at one scale (an elastic and an inelastic ring): the second figure of
+// Silva et al.'s CS-ASA paper. `plastica render SERIES --shapes d1,d2,… [--overlay OTHER]` writes shapes.png.
 #pragma once
 
 #include "series_summary.hpp"

@@ -144,7 +144,7 @@ std::vector<StabilityCase> robustness_cases() {
                      edited(embedded_scene("gallery/ring_full"), {{"fy = 36518.0", "fy = 3651.8"}}), done, nullptr});
     // The whole ring √3 times thicker at the same area (I × 3), in the scene's fixed increments:
     // it passes its sway near δ = 88. Its round-off floor is 0.7 of the tolerance there, so some
-    // other increments stop (README, "Stability on stiff and extreme cases").
+    // other increments stop (docs/stability.md).
     cases.push_back({name, "whole, I × 3",
                      edited(embedded_scene("gallery/ring_full"), {{"b = 9.128709291752768", "b = 5.2704627669473"},
                                                                  {"h = 0.010954451150103323", "h = 0.018973665961010275"}}),

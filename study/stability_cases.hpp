@@ -1,4 +1,4 @@
-// The built-in stability sweep (DESIGN §7): stiff, extreme and failing cases, each with the
+// The built-in stability sweep: stiff, extreme and failing cases, each with the
 // outcome it must have. `plastica stability` prints them as a table and the tests assert them.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Error against run time (DESIGN §7): a scene run over a ladder of one discretisation parameter
+// Error against run time: a scene run over a ladder of one discretisation parameter
 // at a time; for each level the analysis wall time (median of repeats when a run is short),
 // steps, Newton iterations, and the error of its load–displacement curve against a reference —
 // the scene's closed form, a user's CSV curve, or the finest level of the same ladder. The

@@ -1,4 +1,4 @@
-// Parameter sweeps (DESIGN §9): a plan of runs, each a set of scene overrides (--set), as a grid
+// Parameter sweeps: a plan of runs, each a set of scene overrides (--set), as a grid
 // or zipped lists of values, or as a reproducible Monte Carlo sample; the commands that run
 // them (a worker pool, GNU Parallel, a Slurm array); and sweep.csv built from whatever run
 // folders exist, so an in-process sweep and a cluster run end in the same files.

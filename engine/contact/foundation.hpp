@@ -1,4 +1,4 @@
-// Discrete foundation springs (seed eq. 5, Kb = diag(kx, ky, kθ)) and frictionless unilateral
+// Discrete foundation springs (Silva et al., CS-ASA, eq. 5: Kb = diag(kx, ky, kθ)) and frictionless unilateral
 // contact with a straight rigid base by the penalty method. A bilateral spring always acts:
 // f = Kb·u. A unilateral spring acts along the base normal n only while the node touches or
 // penetrates the base, gap g = (x − p)·n ≤ 0 (equality included, so a ring that starts on the

@@ -3,7 +3,7 @@
 //
 // Each end has two kinds of yield rows, solved together by one return map from the committed
 // state (backward Euler, element/return_map.hpp):
-// - the seed's pseudo-spring while the end section is partly yielded: a loading surface
+// - the CS-ASA paper's pseudo-spring (Silva, Silveira, Lemes, Nogueira, Gonçalves) while the end section is partly yielded: a loading surface
 //   through the committed moment with hardening S = (6EI/L)·η/(1 − η), η = EI_T/EI of the
 //   section by the Strain Compatibility Method at the committed state (Chan & Chui 2000). Its
 //   multiplier decides loading or unloading, so the response stays continuous where an end

@@ -1,4 +1,4 @@
-// Bilinear elastic-perfectly-plastic steel fibre (seed eq. 6) with a trial/commit history:
+// Bilinear elastic-perfectly-plastic steel fibre (Silva et al., CS-ASA, eq. 6) with a trial/commit history:
 // σ = E(ε − εp) inside the elastic range, ±fy while yielding; unloading is elastic and keeps
 // the plastic strain εp. Past the ultimate strain εu the fibre has failed and carries nothing.
 #pragma once

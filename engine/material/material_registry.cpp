@@ -16,7 +16,7 @@ std::unique_ptr<UniaxialMaterial> make(const SteelSpec& spec, double residual_st
 
 const std::vector<MaterialLaw>& material_laws() {
     static const std::vector<MaterialLaw> laws{
-        {"bilinear", {}, "elastic–perfectly plastic (the seed's law)", make<BilinearSteel>, true},
+        {"bilinear", {}, "elastic–perfectly plastic (the CS-ASA paper's law)", make<BilinearSteel>, true},
         {"kinematic_hardening", {"hardening_ratio"}, "bilinear with linear kinematic hardening (tangent b·E past yield, Bauschinger effect)",
          make<KinematicHardeningSteel>, false},
     };

@@ -17,7 +17,7 @@ struct Node {
     double y = 0.0;
 };
 
-// Bilinear steel (seed eq. 6): elastic inside ±εy, ±fy up to ±εu, failed past εu.
+// Bilinear steel (Silva et al., CS-ASA, eq. 6): elastic inside ±εy, ±fy up to ±εu, failed past εu.
 // An inelastic material: its law (material/material_registry.cpp lists them), the parameters
 // every law has, and those of its own (by key, as the scene names them).
 struct SteelSpec {
@@ -28,7 +28,7 @@ struct SteelSpec {
     std::map<std::string, double> parameters;
 };
 
-// The seed's elastic–perfectly plastic steel.
+// The CS-ASA paper's elastic–perfectly plastic steel.
 inline SteelSpec bilinear_steel(double E, double fy, double ultimate_strain = 0.0) {
     SteelSpec s;
     s.E = E;
@@ -114,7 +114,7 @@ struct BaseLine {
     }
 };
 
-// Discrete foundation spring at a node (seed eq. 5): Kb = diag(kx, ky, kθ). A unilateral
+// Discrete foundation spring at a node (Silva et al., CS-ASA, eq. 5): Kb = diag(kx, ky, kθ). A unilateral
 // spring pushes along the base normal only, and only while the node touches the base. An
 // anchored one (a tensionless Winkler bed) has no base line: it pushes with stiffness ky along
 // its own `direction` while the node has moved against it from its initial position.

@@ -1,4 +1,4 @@
-// Fibre section solved by the Strain Compatibility Method (seed eqs. 7–11).
+// Fibre section solved by the Strain Compatibility Method (Silva et al., CS-ASA, eqs. 7–11).
 // Plane sections: ε(y) = ε0 − y·Φ; resultants N = Σ σ A, M = −Σ σ y A (M = EI·Φ when elastic).
 // Given a target (N, M), Newton on X = [ε0, Φ] solves F(X) = f_ext − f_int(X) = 0 with the
 // Jacobian [∂N/∂ε0 ∂N/∂Φ; ∂M/∂ε0 ∂M/∂Φ]; the tangents are EA_T = f11 − f12 f21 / f22 and
