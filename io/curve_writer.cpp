@@ -2,6 +2,7 @@
 
 #include "analysis/support_reactions.hpp"
 #include "atomic_file.hpp"
+#include "result_schema.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -64,6 +65,10 @@ private:
 std::string curve_header(const Model& model) {
     std::string header = "step,load_factor,load,control_displacement,iterations,contact_count,hinge_count,"
                          "plastic_hinge_count,base_reaction,contact_length,negative_pivots,accepted_by,residual";
+    // A staged run says which stage each step belongs to, and a run of several patterns each
+    // pattern's factor (load_factor is the factor of the pattern the step's stage drives).
+    if (!model.stages.empty()) header += ",stage";
+    for (int p : result::active_patterns(model)) header += ",factor_" + model.patterns[static_cast<std::size_t>(p)];
     for (const std::string& name : reaction_columns(model)) header += ',' + name;
     header += '\n';
     return header;
@@ -75,6 +80,9 @@ std::string curve_row(const Model& model, const StepResult& r) {
         << r.iterations << ',' << r.contact_count << ',' << r.hinge_count << ','
         << r.plastic_hinge_count << ',' << r.base_reaction << ',' << r.contact_length << ','
         << r.negative_pivots << ',' << to_string(r.accepted_by) << ',' << r.residual;
+    if (!model.stages.empty()) row << ',' << r.stage;
+    for (int p : result::active_patterns(model))
+        row << ',' << (static_cast<std::size_t>(p) < r.pattern_factors.size() ? r.pattern_factors[static_cast<std::size_t>(p)] : 0.0);
     for (const SupportReaction& s : support_reactions(model, r))
         for (int d = 0; d < dofs_per_node; ++d)
             if (s.reported[d]) row << ',' << s.force[d];

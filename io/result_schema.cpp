@@ -35,6 +35,7 @@ const std::vector<Array> schema = {
     {name::moment_i, W::cell, T::float64, 1, Q::moment, When::always, "bending moment EI·dθ/ds at the first node"},
     {name::moment_j, W::cell, T::float64, 1, Q::moment, When::always, "bending moment at the second node"},
     {name::shear, W::cell, T::float64, 1, Q::force, When::always, "(M_i + M_j)/L of the basic end moments"},
+    {name::released, W::cell, T::int32, 1, Q::none, When::releases, "moment releases: 1 at the first node, 2 at the second, 3 at both"},
     {name::yielded_share, W::cell, T::float64, 1, Q::none, When::distributed, "largest share of a section's area at the yield stress"},
     {name::section_yielded_share, W::cell, T::float64, 0, Q::none, When::distributed, "yielded share at each integration point, ξ order"},
     {name::section_curvature, W::cell, T::float64, 0, Q::curvature, When::distributed, "κ = dθ/ds at each integration point"},
@@ -52,6 +53,9 @@ const std::vector<Array> schema = {
     {name::iterations, W::field, T::float64, 1, Q::none, When::always, "Newton iterations of the step"},
     {name::contact_count, W::field, T::float64, 1, Q::none, When::always, "nodes in contact"},
     {name::hinge_count, W::field, T::float64, 1, Q::none, When::always, "element ends yielding or fully plastic"},
+    {name::stage, W::field, T::float64, 1, Q::none, When::staged, "1 for [analysis], then 2, 3, … for each [[stage]]"},
+    {name::pattern_factors, W::field, T::float64, 1, Q::none, When::patterns, "each load pattern's factor, one value per pattern in the order of pattern_names"},
+    {name::pattern_names, W::field, T::text, 1, Q::none, When::patterns, "the load patterns, comma-separated"},
     {name::mirror_x, W::field, T::float64, 1, Q::length, When::half_model, "x of the symmetry line of a half model"},
     {name::scene, W::field, T::text, 1, Q::none, When::always, "scene name"},
     {name::title, W::field, T::text, 1, Q::none, When::always, "scene title"},
@@ -62,7 +66,8 @@ const std::vector<Array> schema = {
     {name::load_unit, W::field, T::text, 1, Q::none, When::units, "unit of `load`"},
     {name::displacement_unit, W::field, T::text, 1, Q::none, When::units, "unit of `control_displacement`"},
     {name::base_kind, W::base, T::int32, 1, Q::none, When::spring_anchors, "0 spring anchor (vertex), 1 rigid base line"},
-    {name::base_motion, W::base, T::float64, 3, Q::length, When::moving_base, "a platen's travel per unit λ (lines only)"},
+    {name::base_motion, W::base, T::float64, 3, Q::length, When::moving_base, "a platen's travel per unit factor of its pattern (lines only)"},
+    {name::base_pattern, W::base, T::int32, 1, Q::none, When::moving_base_patterns, "the line's load pattern: its index in pattern_factors"},
 };
 
 bool has_bilateral_springs(const Model& m) {
@@ -93,8 +98,20 @@ bool present(const Array& a, const Model& m) {
     case When::units: return !m.report.length_unit.empty() || !m.report.force_unit.empty();
     case When::spring_anchors: return !m.springs.empty();
     case When::moving_base: return m.has_moving_base();
+    case When::staged: return !m.stages.empty();
+    case When::releases: return m.has_releases();
+    case When::patterns: return !active_patterns(m).empty();
+    case When::moving_base_patterns: return m.has_moving_base() && !active_patterns(m).empty();
     }
     return false;
+}
+
+std::vector<int> active_patterns(const Model& m) {
+    std::vector<int> out;
+    for (std::size_t p = 0; p < m.patterns.size(); ++p)
+        if (m.loaded(static_cast<int>(p)) || m.has_moving_base(static_cast<int>(p))) out.push_back(static_cast<int>(p));
+    if (out.size() < 2) out.clear();
+    return out;
 }
 
 std::vector<std::string> names(Where where, const Model& m) {
@@ -126,7 +143,9 @@ std::string markdown_table() {
     static const char* when_text[] = {"always", "supports or prescribed displacements", "supports", "loads or pressure",
                                       "bilateral springs", "a rigid base or tensionless bed", "plastic hinges",
                                       "distributed plasticity", "a half model (`mirror_x`)", "units named in `[report]`",
-                                      "springs or a rigid base", "a moving base"};
+                                      "springs or a rigid base", "a moving base", "stages (`[[stage]]`)",
+                                      "two or more load patterns", "a moving base and two or more load patterns",
+                                      "released member ends"};
     std::ostringstream out;
     out << "| array | where | type | components | unit | written for | meaning |\n"
         << "|---|---|---|---|---|---|---|\n";

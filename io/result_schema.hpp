@@ -33,6 +33,10 @@ enum class When {
     units,                   // [report] names its units
     spring_anchors,          // base.vtp: bilateral springs or rigid lines
     moving_base,
+    staged,                  // [[stage]]s after [analysis]
+    patterns,                // more than one load pattern
+    moving_base_patterns,    // base.vtp: a moving base, and more than one load pattern
+    releases,                // a member end is released
 };
 
 struct Array {
@@ -51,6 +55,9 @@ const std::vector<Array>& arrays();
 const Array& find(std::string_view name);
 // Whether a scene writes the array.
 bool present(const Array& array, const Model& model);
+// The load patterns that hold something (loads, pressures, prescribed displacements or a moving
+// base), when there are two or more; else none.
+std::vector<int> active_patterns(const Model& model);
 // The names a scene writes at one place, in the schema's order.
 std::vector<std::string> names(Where where, const Model& model);
 // The unit of an array's values from the scene's length and force units ("" when unnamed).
@@ -108,6 +115,11 @@ inline constexpr const char* load_unit = "load_unit";
 inline constexpr const char* displacement_unit = "displacement_unit";
 inline constexpr const char* base_kind = "kind";
 inline constexpr const char* base_motion = "motion";
+inline constexpr const char* released = "released";
+inline constexpr const char* stage = "stage";
+inline constexpr const char* pattern_factors = "pattern_factors";
+inline constexpr const char* pattern_names = "pattern_names";
+inline constexpr const char* base_pattern = "pattern";
 } // namespace name
 
 // Codes of the Int32 states.

@@ -44,6 +44,7 @@ public:
         read_distributed_loads(top);
         read_prescribed(top);
         read_foundations(top);
+        check_released_moments();
         read_analysis(top);
         read_stages(top);
         read_report(top);
@@ -52,6 +53,7 @@ public:
         if (!model_.loaded() && !model_.has_moving_base())
             throw SceneError(file_, 1, "load",
                              "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement and no moving base (base_motion)");
+        check_patterns_driven(top);
         return std::move(model_);
     }
 
@@ -251,6 +253,19 @@ private:
         }
     }
 
+    // 'releases = ["start", "end"]': moment releases at the member's first and last node.
+    void read_releases(TomlTableReader& r, int first_element, int last_element) {
+        const toml::array* list = r.array("releases");
+        if (!list) return;
+        for (const toml::node& item : *list) {
+            const std::optional<std::string> end = item.value<std::string>();
+            if (!end || (*end != "start" && *end != "end"))
+                r.fail("releases", "expected a list of \"start\" and \"end\" (the member's first and last node)");
+            if (*end == "start") model_.elements[static_cast<std::size_t>(first_element)].released[0] = true;
+            else model_.elements[static_cast<std::size_t>(last_element)].released[1] = true;
+        }
+    }
+
     void read_lines(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "line");
         for (std::size_t i = 0; i < list.size(); ++i) {
@@ -262,8 +277,10 @@ private:
             const int section = section_of(r);
             if (std::hypot(b[0] - a[0], b[1] - a[1]) <= 0.0) r.fail("end", "a line needs a positive length (start and end coincide)");
             size_scale_ = std::max({size_scale_, std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])});
+            const int first = static_cast<int>(model_.elements.size());
             add_member(name, line_points(a, b, n), section, r);
-            r.finish({"name", "start", "end", "elements", "section"});
+            read_releases(r, first, static_cast<int>(model_.elements.size()) - 1);
+            r.finish({"name", "start", "end", "elements", "section", "releases"});
         }
     }
 
@@ -281,8 +298,10 @@ private:
             if (std::abs(a1 - a0) <= 0.0 || std::abs(a1 - a0) > 360.0)
                 r.fail("end_angle", "expected an arc of more than 0 and at most 360 degrees");
             size_scale_ = std::max({size_scale_, std::abs(c[0]) + R, std::abs(c[1]) + R});
+            const int first = static_cast<int>(model_.elements.size());
             add_member(name, arc_points(c, R, a0, a1, n), section, r);
-            r.finish({"name", "center", "radius", "start_angle", "end_angle", "elements", "section"});
+            read_releases(r, first, static_cast<int>(model_.elements.size()) - 1);
+            r.finish({"name", "center", "radius", "start_angle", "end_angle", "elements", "section", "releases"});
         }
     }
 
@@ -302,7 +321,9 @@ private:
             const int n0 = node_by_id(r, "nodes", *(*a)[0].value<int64_t>());
             const int n1 = node_by_id(r, "nodes", *(*a)[1].value<int64_t>());
             add_element(n0, n1, section_of(r), r, "nodes");
-            r.finish({"nodes", "section"});
+            const int added = static_cast<int>(model_.elements.size()) - 1;
+            read_releases(r, added, added);
+            r.finish({"nodes", "section", "releases"});
         }
     }
 
@@ -333,6 +354,37 @@ private:
         std::ostringstream s;
         s << "no node at [" << p[0] << ", " << p[1] << "]";
         r.fail(key, s.str());
+    }
+
+    // The load pattern a load, pressure, prescribed displacement or moving base belongs to
+    // ('pattern', default "main"), registered in Model::patterns on first use.
+    int pattern_of(TomlTableReader& r) {
+        const std::string name = r.string_or("pattern", "main");
+        if (name.empty() || name.size() > 32 ||
+            !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; }))
+            r.fail("pattern", "expected 1 to 32 letters, digits, '_' or '-' (it names a curve column)");
+        const auto known = std::find(model_.patterns.begin(), model_.patterns.end(), name);
+        if (known != model_.patterns.end()) return static_cast<int>(known - model_.patterns.begin());
+        model_.patterns.push_back(name);
+        return static_cast<int>(model_.patterns.size() - 1);
+    }
+
+    // The pattern a stage drives: one with loads, pressures, prescribed displacements or a moving base.
+    int driven_pattern(TomlTableReader& r) {
+        const std::string name = r.string_or("pattern", "main");
+        const auto known = std::find(model_.patterns.begin(), model_.patterns.end(), name);
+        const int p = static_cast<int>(known - model_.patterns.begin());
+        // A scene with nothing to drive at all is told so once it is read (build()).
+        if (!model_.loaded() && !model_.has_moving_base()) return 0;
+        if (known == model_.patterns.end() || (!model_.loaded(p) && !model_.has_moving_base(p))) {
+            std::string names;
+            for (std::size_t k = 0; k < model_.patterns.size(); ++k)
+                if (model_.loaded(static_cast<int>(k)) || model_.has_moving_base(static_cast<int>(k)))
+                    names += (names.empty() ? "'" : ", '") + model_.patterns[k] + "'";
+            r.fail("pattern", "no load, pressure, prescribed displacement or moving base belongs to pattern '" + name +
+                                  "'" + (r.has("pattern") ? "" : " (the default)") + "; the scene's patterns: " + names);
+        }
+        return p;
     }
 
     bool supported(int node, int dof) const {
@@ -372,12 +424,14 @@ private:
             NodalLoad l;
             l.node = node_ref(r);
             l.value = {r.number_or("fx", 0.0), r.number_or("fy", 0.0), r.number_or("moment", 0.0)};
+            l.pattern = pattern_of(r);
             if (l.value[0] == 0.0 && l.value[1] == 0.0 && l.value[2] == 0.0)
                 r.fail("", "a load needs a non-zero 'fx', 'fy' or 'moment'");
             bool moves = false;
             for (int d = 0; d < dofs_per_node; ++d) moves = moves || (l.value[d] != 0.0 && !supported(l.node, d));
             if (!moves) r.fail("", "the load acts only on supported DOFs of the node at " + describe_node(l.node) + ": it moves nothing");
-            r.finish({"node", "at", "fx", "fy", "moment"});
+            load_lines_.push_back(list[i].second);
+            r.finish({"node", "at", "fx", "fy", "moment", "pattern"});
             model_.loads.push_back(l);
         }
     }
@@ -410,6 +464,7 @@ private:
             }
             if (wx == 0.0 && wy == 0.0 && pressure == 0.0 && gravity[0] == 0.0 && gravity[1] == 0.0)
                 r.fail("", "a distributed load needs a non-zero 'wx', 'wy', 'pressure' or 'gravity'");
+            const int pattern = pattern_of(r);
             bool moves = false;
             std::map<int, std::array<double, 2>> lumped;
             for (int e : elements) {
@@ -422,12 +477,12 @@ private:
                     lumped[node][1] += half * (wy + m * gravity[1]);
                     moves = moves || !supported(node, 0) || !supported(node, 1);
                 }
-                if (pressure != 0.0) model_.pressures.push_back({e, pressure});
+                if (pressure != 0.0) model_.pressures.push_back({e, pressure, pattern});
             }
             if (!moves) r.fail("on", "every node of '" + on + "' is held: the load moves nothing");
             for (const auto& [node, f] : lumped)
-                if (f[0] != 0.0 || f[1] != 0.0) model_.loads.push_back({node, {f[0], f[1], 0.0}});
-            r.finish({"on", "wx", "wy", "pressure", "gravity"});
+                if (f[0] != 0.0 || f[1] != 0.0) model_.loads.push_back({node, {f[0], f[1], 0.0}, pattern});
+            r.finish({"on", "wx", "wy", "pressure", "gravity", "pattern"});
         }
     }
 
@@ -439,9 +494,10 @@ private:
             p.node = node_ref(r);
             p.dof = dof_index(r, "dof", r.string("dof"));
             p.value = r.number("value");
+            p.pattern = pattern_of(r);
             if (supported(p.node, p.dof))
                 r.fail("dof", "this DOF is also supported ([[support]] fix): a prescribed displacement replaces the support there; remove it from 'fix'");
-            r.finish({"node", "at", "dof", "value"});
+            r.finish({"node", "at", "dof", "value", "pattern"});
             model_.prescribed.push_back(p);
         }
     }
@@ -524,9 +580,11 @@ private:
                 base.normal = {base.normal[0] / nn, base.normal[1] / nn};
                 // A platen: the base moves by λ·base_motion (the load factor drives it).
                 if (r.has("base_motion")) base.motion = r.point("base_motion");
+                if (r.has("pattern") && !base.moves()) r.fail("pattern", "a pattern drives a moving base ('base_motion')");
+                if (base.moves()) base.pattern = pattern_of(r);
                 // Foundations on the same line share it; another line is another base.
                 const auto same = std::find_if(model_.bases.begin(), model_.bases.end(), [&](const BaseLine& b) {
-                    return b.point == base.point && b.normal == base.normal && b.motion == base.motion;
+                    return b.point == base.point && b.normal == base.normal && b.motion == base.motion && b.pattern == base.pattern;
                 });
                 base_index = static_cast<int>(same - model_.bases.begin());
                 if (same == model_.bases.end()) model_.bases.push_back(base);
@@ -536,7 +594,7 @@ private:
                         inside += (inside.empty() ? "" : ", ") + describe_node(n);
                 if (!inside.empty()) r.fail("base_point", "the structure already penetrates the base at " + inside);
             } else {
-                for (const char* key : {"base_point", "base_normal", "base_motion"})
+                for (const char* key : {"base_point", "base_normal", "base_motion", "pattern"})
                     if (r.has(key)) r.fail(key, "a base line belongs to a unilateral foundation (kind = \"unilateral\")");
             }
             const std::vector<std::array<double, 2>> directions = tensionless ? bed_directions(r, nodes) : std::vector<std::array<double, 2>>{};
@@ -553,7 +611,7 @@ private:
                 model_.springs.push_back(s);
             }
             r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal",
-                      "base_motion", "direction"});
+                      "base_motion", "direction", "pattern"});
         }
     }
 
@@ -596,6 +654,14 @@ private:
         for (std::size_t i = 0; i < list.size(); ++i) {
             TomlTableReader r(*list[i].first, file_, indexed("stage", i));
             StageSpec s;
+            s.pattern = driven_pattern(r);
+            s.control = model_.stages.empty() ? a.control : model_.stages.back().control;
+            if (r.has("control_at") || r.has("control_node")) {
+                s.control = read_control(r, s.pattern);
+            } else {
+                for (const char* key : {"control_dof", "control_sign"})
+                    if (r.has(key)) r.fail(key, "name the controlled point as well ('control_at' or 'control_node')");
+            }
             const std::string scheme = r.choice("scheme", {"load_control", "displacement_control"}, "load_control");
             s.scheme = scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
             s.increment = r.positive("increment");
@@ -611,16 +677,42 @@ private:
             if (s.scheme == Scheme::displacement_control && s.target_load_factor)
                 r.fail("target_load_factor", "a displacement-controlled stage stops at a 'target_displacement'");
             if (s.scheme == Scheme::displacement_control) {
+                const std::string named = r.has("control_at") || r.has("control_node") ? "" : " (an earlier stage or [analysis] names it)";
                 for (const Support& sup : model_.supports)
-                    if (sup.node == a.control.node && sup.fixed[a.control.dof])
-                        r.fail("scheme", "the controlled DOF is supported ([analysis] names it)");
+                    if (sup.node == s.control.node && sup.fixed[s.control.dof])
+                        r.fail("scheme", "the controlled DOF is supported" + named);
                 for (const PrescribedDisplacement& p : model_.prescribed)
-                    if (p.node == a.control.node && p.dof == a.control.dof)
-                        r.fail("scheme", "the controlled DOF has a prescribed displacement ([analysis] names it)");
+                    if (p.node == s.control.node && p.dof == s.control.dof)
+                        r.fail("scheme", "the controlled DOF has a prescribed displacement" + named);
             }
-            r.finish({"scheme", "increment", "adaptive", "target_load_factor", "target_displacement"});
+            r.finish({"scheme", "increment", "adaptive", "target_load_factor", "target_displacement", "pattern",
+                      "control_at", "control_node", "control_dof", "control_sign"});
             model_.stages.push_back(s);
         }
+    }
+
+    // A moment on a node where every member end is released has nothing to carry it.
+    void check_released_moments() const {
+        const std::vector<bool> unattached = model_.rotation_unattached();
+        for (std::size_t i = 0; i < load_lines_.size(); ++i) {
+            const NodalLoad& l = model_.loads[i];
+            if (l.value[2] != 0.0 && unattached[static_cast<std::size_t>(l.node)])
+                throw SceneError(file_, load_lines_[i], "load[" + std::to_string(i + 1) + "].moment",
+                                 "every member end at " + describe_node(l.node) +
+                                     " is released, so nothing carries a moment there (hold the rotation with a support or a 'krot' spring, or release fewer ends)");
+        }
+    }
+
+    // A pattern no stage drives would never act: most likely a misspelt name.
+    void check_patterns_driven(TomlTableReader& top) {
+        std::vector<bool> driven(model_.patterns.size(), false);
+        driven[static_cast<std::size_t>(model_.analysis.pattern)] = true;
+        for (const StageSpec& st : model_.stages) driven[static_cast<std::size_t>(st.pattern)] = true;
+        for (std::size_t p = 0; p < driven.size(); ++p)
+            if (!driven[p] && (model_.loaded(static_cast<int>(p)) || model_.has_moving_base(static_cast<int>(p))))
+                top.fail("stage", "load pattern '" + model_.patterns[p] +
+                                      "' is driven by neither [analysis] nor a [[stage]] ('pattern = \"" + model_.patterns[p] +
+                                      "\"'), so its loads would never act");
     }
 
     std::string describe_node(int n) const {
@@ -659,30 +751,15 @@ private:
         if (r.has("target_load_factor"))
             a.target_load_factor = r.positive("target_load_factor"); // a load the other way: reverse the [[load]]
         if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement");
+        a.pattern = driven_pattern(r);
         if (r.has("control_at") || r.has("control_node")) {
-            a.control.node = node_ref(r, "control_node", "control_at");
-            a.control.dof = dof_index(r, "control_dof", r.string_or("control_dof", "uy"));
-            // The reported (and controlled) displacement runs with the load on the controlled DOF:
-            // by default its sign is the load's, and a sign against the load is refused.
-            double load_on_control = 0.0;
-            for (const NodalLoad& l : model_.loads)
-                if (l.node == a.control.node) load_on_control += l.value[a.control.dof];
-            const double along_load = load_on_control < 0.0 ? -1.0 : 1.0;
-            if (r.has("control_sign")) {
-                const double sign = r.number("control_sign");
-                if (sign != 1.0 && sign != -1.0) r.fail("control_sign", "expected 1 or -1");
-                if (load_on_control != 0.0 && sign != along_load)
-                    r.fail("control_sign", "the load on the controlled DOF points the other way: with control_sign = " +
-                                               std::string(sign > 0 ? "1" : "-1") + " the structure would be pushed against it; use " +
-                                               std::string(along_load > 0 ? "1" : "-1") + " (or leave it out)");
-                a.control.sign = sign;
-            } else {
-                a.control.sign = along_load;
-            }
+            a.control = read_control(r, a.pattern);
         } else if (a.scheme == Scheme::displacement_control || a.target_displacement) {
             r.fail("", "missing 'control_at' (the point whose displacement controls or stops the analysis)");
-        } else if (nodal_loads_ > 0) {
-            a.control.node = model_.loads.front().node; // report the first load's point
+        } else if (const auto first = std::find_if(model_.loads.begin(), model_.loads.begin() + nodal_loads_,
+                                                   [&](const NodalLoad& l) { return l.pattern == a.pattern; });
+                   first != model_.loads.begin() + nodal_loads_) {
+            a.control.node = first->node; // report the first load's point
             a.control.dof = 1;
         } else if (model_.prescribed.empty() && (!model_.loads.empty() || !model_.pressures.empty())) {
             r.fail("", "missing 'control_at': a scene loaded only by [[distributed_load]]s names the point whose displacement it reports");
@@ -707,7 +784,31 @@ private:
         r.finish({"scheme", "increment", "min_increment", "max_increment", "adaptive", "desired_iterations",
                   "max_iterations", "max_steps", "residual_tolerance", "displacement_tolerance",
                   "target_load_factor", "target_displacement", "control_at", "control_node", "control_dof",
-                  "control_sign", "allow_crossing"});
+                  "control_sign", "allow_crossing", "pattern"});
+    }
+
+    // A controlled (and reported) DOF: 'control_at' or 'control_node', 'control_dof' (default
+    // "uy") and 'control_sign'. The displacement runs with the driven pattern's load on that DOF:
+    // by default its sign is the load's, and a sign against the load is refused.
+    DofRef read_control(TomlTableReader& r, int pattern) {
+        DofRef c;
+        c.node = node_ref(r, "control_node", "control_at");
+        c.dof = dof_index(r, "control_dof", r.string_or("control_dof", "uy"));
+        double load_on_control = 0.0;
+        for (const NodalLoad& l : model_.loads)
+            if (l.node == c.node && l.pattern == pattern) load_on_control += l.value[c.dof];
+        const double along_load = load_on_control < 0.0 ? -1.0 : 1.0;
+        c.sign = along_load;
+        if (r.has("control_sign")) {
+            const double sign = r.number("control_sign");
+            if (sign != 1.0 && sign != -1.0) r.fail("control_sign", "expected 1 or -1");
+            if (load_on_control != 0.0 && sign != along_load)
+                r.fail("control_sign", "the load on the controlled DOF points the other way: with control_sign = " +
+                                           std::string(sign > 0 ? "1" : "-1") + " the structure would be pushed against it; use " +
+                                           std::string(along_load > 0 ? "1" : "-1") + " (or leave it out)");
+            c.sign = sign;
+        }
+        return c;
     }
 
     void read_report(TomlTableReader& top) {
@@ -797,6 +898,7 @@ private:
     std::map<int, int> node_ids_;
     std::map<std::string, std::vector<int>> groups_;          // nodes of each [[line]]/[[arc]]
     std::map<std::string, std::vector<int>> member_elements_; // elements of each [[line]]/[[arc]]
+    std::vector<int> load_lines_; // of each [[load]], in order
     int nodal_loads_ = 0;                                     // [[load]]s, ahead of the lumped ones
     std::set<std::pair<int, int>> members_; // node pairs with an element
     double size_scale_ = 0.0;

@@ -24,12 +24,13 @@ std::pair<std::string, std::string> reported_units(const Model& m) {
         load.clear();
     } else if (m.uniform_pressure_only()) {
         load = compound(force, "/", length);
-    } else if (!m.loads.empty() && std::all_of(m.loads.begin(), m.loads.end(), [](const NodalLoad& l) {
-                   return l.value[0] == 0.0 && l.value[1] == 0.0;
-               })) {
-        load = compound(force, "·", length); // moments only
+    } else {
+        bool any = false, moments_only = true;
+        for (const NodalLoad& l : m.loads)
+            if (l.pattern == m.reported_pattern()) any = true, moments_only = moments_only && l.value[0] == 0.0 && l.value[1] == 0.0;
+        if (any && moments_only) load = compound(force, "·", length);
     }
-    return {load, m.analysis.control.dof == 2 ? "rad" : length};
+    return {load, m.reported_control().dof == 2 ? "rad" : length};
 }
 
 } // namespace
@@ -105,11 +106,10 @@ XmlDataset StepDataset::operator()(const StepResult& r, double time) const {
         real(mi)[e] = f.moment_i;
         real(mj)[e] = f.moment_j;
         real(shear)[e] = f.shear;
+        // A released end carries no moment: the node's moment is its other members'.
         const ElementSpec& spec = m.elements[e];
-        real(moment)[spec.node_i] += f.moment_i;
-        real(moment)[spec.node_j] += f.moment_j;
-        ++count[spec.node_i];
-        ++count[spec.node_j];
+        if (!spec.released[0]) real(moment)[spec.node_i] += f.moment_i, ++count[spec.node_i];
+        if (!spec.released[1]) real(moment)[spec.node_j] += f.moment_j, ++count[spec.node_j];
     }
     for (std::size_t i = 0; i < n; ++i)
         if (count[i] > 0) real(moment)[i] /= count[i];
@@ -118,6 +118,12 @@ XmlDataset StepDataset::operator()(const StepResult& r, double time) const {
     cd.push_back(std::move(mi));
     cd.push_back(std::move(mj));
     cd.push_back(std::move(shear));
+    if (has(name::released)) {
+        XmlArray released = integer_array(name::released, ne);
+        for (std::size_t e = 0; e < ne; ++e)
+            integer(released)[e] = (m.elements[e].released[0] ? 1 : 0) + (m.elements[e].released[1] ? 2 : 0);
+        cd.push_back(std::move(released));
+    }
 
     // What holds and what pushes: reactions at supported and prescribed DOFs (the force on the
     // structure), which DOFs each node's support fixes, and the applied load λF (with pressure
@@ -233,6 +239,19 @@ XmlDataset StepDataset::operator()(const StepResult& r, double time) const {
     fd.push_back(field_value(name::iterations, r.iterations));
     fd.push_back(field_value(name::contact_count, r.contact_count));
     fd.push_back(field_value(name::hinge_count, r.hinge_count));
+    if (has(name::stage)) fd.push_back(field_value(name::stage, r.stage));
+    if (has(name::pattern_factors)) {
+        const std::vector<int> patterns = result::active_patterns(m);
+        XmlArray factors = real_array(name::pattern_factors, patterns.size());
+        std::string names;
+        for (std::size_t k = 0; k < patterns.size(); ++k) {
+            const std::size_t p = static_cast<std::size_t>(patterns[k]);
+            real(factors)[k] = p < r.pattern_factors.size() ? r.pattern_factors[p] : 0.0;
+            names += (k ? "," : "") + m.patterns[p];
+        }
+        fd.push_back(std::move(factors));
+        fd.push_back(field_text(name::pattern_names, names));
+    }
     if (has(name::mirror_x)) fd.push_back(field_value(name::mirror_x, *m.report.mirror_x));
     // Names for pictures: the render stage reads them from here, not from the scene file.
     fd.push_back(field_text(name::scene, m.name));

@@ -103,8 +103,11 @@ void VtuSeriesWriter::write_base() {
     }
     // Each rigid line, long enough for a structure that spreads over it: twice the structure's
     // extent on either side of its centre. A platen's line is drawn where it is at λ = 0 and
-    // moves by λ·motion (cell array "motion"; λ is each step's load_factor).
+    // moves by λ·motion (cell array "motion"; λ is each step's load_factor, or with several load
+    // patterns the factor of the line's "pattern" in the step's pattern_factors).
     XmlArray motion = real_array(result::name::base_motion, poly.vertices.size(), 3);
+    XmlArray pattern = integer_array(result::name::base_pattern, poly.vertices.size());
+    const std::vector<int> patterns = result::active_patterns(m);
     for (const BaseLine& base : m.bases) {
         double lo = 1e300, hi = -1e300;
         const double tx = -base.normal[1], ty = base.normal[0];
@@ -119,9 +122,11 @@ void VtuSeriesWriter::write_base() {
         poly.lines.push_back({a, b});
         integer(kind).push_back(static_cast<int>(result::BaseKind::rigid_line));
         for (double v : {base.motion[0], base.motion[1], 0.0}) real(motion).push_back(v);
+        integer(pattern).push_back(static_cast<int>(std::find(patterns.begin(), patterns.end(), base.pattern) - patterns.begin()));
     }
     poly.cell_data.push_back(std::move(kind));
     if (dataset_.has(result::name::base_motion)) poly.cell_data.push_back(std::move(motion));
+    if (dataset_.has(result::name::base_pattern)) poly.cell_data.push_back(std::move(pattern));
     write_file_atomically((fs::path(directory_) / "base.vtp").string(), poly_data_xml(poly, options_.compression));
     has_base_file_ = true;
 }

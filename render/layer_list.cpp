@@ -2,6 +2,9 @@
 #include "layers/layers.hpp"
 #include "render_error.hpp"
 
+#include "result_schema.hpp"
+
+#include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
@@ -31,6 +34,10 @@ const std::vector<LayerKind>& kinds() {
         {"hinges",
          [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
              return s.inelastic ? hinge_layer(s) : nullptr;
+         }},
+        {"releases",
+         [](const SeriesSummary&, vtkUnstructuredGrid* first, vtkPolyData*) -> std::unique_ptr<Layer> {
+             return first && first->GetCellData()->GetArray(result::name::released) ? release_layer() : nullptr;
          }},
         {"contact",
          [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "analysis/path_following.hpp"
+#include "scene_error.hpp"
 #include "scene_reader.hpp"
 
 #include <cmath>
@@ -66,6 +67,16 @@ double value_at(const std::vector<StepResult>& steps, double x, GetX gx, GetY gy
             return gy(steps[k - 1]) + (gy(steps[k]) - gy(steps[k - 1])) * (x - x0) / (x1 - x0);
     }
     throw std::runtime_error("the path does not reach the requested value");
+}
+
+// The message a scene text is refused with, or "no error".
+inline std::string scene_error_of(const std::string& text, const std::string& file_name) {
+    try {
+        read_scene_text(text, file_name);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "no error";
 }
 
 inline std::string num(double v) {

@@ -51,9 +51,11 @@ Run run_frame(const std::string& relative) {
 TEST_CASE("No member end of a hinged frame exceeds its own M_p(N), and each reports its own utilisation", "[plasticity][frames]") {
     // Weak columns and a beam weaker at N = 0 (the joint's hinge belongs in the column once it
     // carries its axial load), a beam stronger at any N, one section throughout under heavy
-    // gravity (the column's M_p(N) is a sixth below the beam's), two bays, three storeys.
+    // gravity (the column's M_p(N) is a sixth below the beam's), two bays, three storeys, and
+    // gravity held while the sway is pushed.
     const char* scene = GENERATE("tests/frames/portal_weak_columns.toml", "tests/frames/portal_strong_beam.toml",
-                                 "tests/frames/three_storey_frame.toml", "models/gallery/portal_frame.toml",
+                                 "tests/frames/three_storey_frame.toml", "tests/frames/portal_gravity_push.toml",
+                                 "models/gallery/portal_frame.toml",
                                  "models/gallery/two_bay_frame.toml");
     CAPTURE(scene);
     const Run run = run_frame(scene);

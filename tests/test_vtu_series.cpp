@@ -154,6 +154,10 @@ double engine_value(const std::string& array, const Series& s, const StepResult&
     if (array == name::contact_count) return r.contact_count;
     if (array == name::hinge_count) return r.hinge_count;
     if (array == name::mirror_x) return *s.model.report.mirror_x;
+    if (array == name::stage) return r.stage;
+    if (array == name::pattern_factors) return r.pattern_factors[static_cast<std::size_t>(result::active_patterns(s.model)[i])];
+    if (array == name::released)
+        return (s.model.elements[i].released[0] ? 1 : 0) + (s.model.elements[i].released[1] ? 2 : 0);
     if (array == name::support) {
         int bits = 0;
         for (const Support& sp : s.model.supports)
@@ -223,8 +227,10 @@ TEST_CASE("Every shipped scene writes exactly the schema's arrays it needs, of t
             }
             const int components = a.components == 0 ? s.model.integration_points() : a.components;
             CHECK(read->GetNumberOfComponents() == components);
+            // Field data hold one value, but the pattern factors one per load pattern.
             const vtkIdType tuples = a.where == result::Where::point  ? grid->GetNumberOfPoints()
                                      : a.where == result::Where::cell ? grid->GetNumberOfCells()
+                                     : array == result::name::pattern_factors ? static_cast<vtkIdType>(result::active_patterns(s.model).size())
                                                                       : 1;
             CHECK(read->GetNumberOfTuples() == tuples);
             vtkDataArray* values = vtkDataArray::SafeDownCast(read);

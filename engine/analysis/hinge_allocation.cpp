@@ -40,9 +40,12 @@ JointHinges::JointHinges(const Model& model) : served_(model.elements.size()) {
     // The ends of hinge elements at each node, as (element, end).
     std::vector<std::vector<std::array<int, 2>>> ends(model.nodes.size());
     std::vector<int> members(model.nodes.size(), 0);
+    std::vector<bool> released(model.nodes.size(), false); // a member end there is released: no rigid joint
     for (std::size_t e = 0; e < model.elements.size(); ++e) {
         const ElementSpec& spec = model.elements[e];
         ++members[spec.node_i], ++members[spec.node_j];
+        if (spec.released[0]) released[spec.node_i] = true;
+        if (spec.released[1]) released[spec.node_j] = true;
         if (model.sections[spec.section].plasticity != Plasticity::hinges) continue;
         ends[spec.node_i].push_back({static_cast<int>(e), 0});
         ends[spec.node_j].push_back({static_cast<int>(e), 1});
@@ -50,7 +53,7 @@ JointHinges::JointHinges(const Model& model) : served_(model.elements.size()) {
     const std::vector<bool> taken = rotation_taken(model);
     const std::vector<double> capacity = section_capacities(model);
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-        if (members[n] != 2 || ends[n].size() != 2 || taken[n]) continue;
+        if (members[n] != 2 || ends[n].size() != 2 || taken[n] || released[n]) continue;
         Joint joint;
         joint.ends = {ends[n][0], ends[n][1]};
         const std::array<double, 2> strength{capacity[model.elements[ends[n][0][0]].section],

@@ -24,42 +24,68 @@ constexpr double hopeless_floor = 1e3;
 // How far into its yielding range (in |M|/M_p) one adaptive increment may carry a hinge section.
 constexpr double max_yield_advance = 0.05;
 
-Eigen::VectorXd nodal_loads(const Model& model) {
-    Eigen::VectorXd force = Eigen::VectorXd::Zero(model.dof_count());
-    for (const NodalLoad& l : model.loads)
-        for (int d = 0; d < dofs_per_node; ++d) force[dofs_per_node * l.node + d] += l.value[d];
-    return force;
+double dof_value(const DofRef& c, const Eigen::VectorXd& u) {
+    return c.sign * u[dofs_per_node * c.node + c.dof];
 }
 } // namespace
 
 PathFollowing::PathFollowing(const Model& model)
-    : model_(model), analysis_(model.analysis), system_(model, nodal_loads(model)) {
+    : model_(model), analysis_(model.analysis), system_(model), factors_(model.patterns.size()) {
     const int n = model.dof_count();
     u_ = Eigen::VectorXd::Zero(n);
     ubar_ = Eigen::VectorXd::Zero(n);
+    ubar_held_ = Eigen::VectorXd::Zero(n);
+    factors_.driven = model.analysis.pattern;
     for (const PrescribedDisplacement& p : model.prescribed)
-        ubar_[dofs_per_node * p.node + p.dof] = p.value;
+        if (p.pattern == factors_.driven) ubar_[dofs_per_node * p.node + p.dof] = p.value;
     const DofRef& c = model.analysis.control;
     control_equation_ = system_.equation(dofs_per_node * c.node + c.dof);
 }
 
 double PathFollowing::control_value(const Eigen::VectorXd& u) const {
-    const DofRef& c = model_.analysis.control;
-    return c.sign * u[dofs_per_node * c.node + c.dof];
+    return dof_value(analysis_.control, u);
+}
+
+void PathFollowing::drive_pattern(int pattern) {
+    if (pattern == factors_.driven) return;
+    factors_.held[static_cast<std::size_t>(factors_.driven)] = lambda_;
+    factors_.driven = pattern;
+    lambda_ = factors_.held[static_cast<std::size_t>(pattern)];
+    factors_.held[static_cast<std::size_t>(pattern)] = 0.0;
+    ubar_.setZero();
+    ubar_held_.setZero();
+    for (const PrescribedDisplacement& p : model_.prescribed) {
+        const int dof = dofs_per_node * p.node + p.dof;
+        ubar_[dof] += factors_.rate(p.pattern) * p.value;
+        ubar_held_[dof] += factors_.constant(p.pattern) * p.value;
+    }
+    system_.set_pattern_factors(factors_);
+    // The new pattern's residual is measured against its own loads and the held ones, and its
+    // limit against the stiffness the structure has where the stage starts.
+    peak_lambda_ = std::abs(lambda_);
+    system_.evaluate(u_, ubar_, lambda_, false);
+    initial_flexibility_ = 0.0;
+    if (system_.free_count() > 0 && solver_.factorize(system_.tangent())) {
+        const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+        initial_flexibility_ = f.dot(solver_.solve(f));
+    }
 }
 
 const StepResult& PathFollowing::make_result(int step, int iterations, Acceptance rule, bool with_sections) {
     StepResult& r = result_;
     r.step = step;
     r.load_factor = lambda_;
-    r.load = lambda_ * model_.load_per_factor();
-    r.control_displacement = control_value(u_);
+    r.stage = static_cast<int>(stage_) + 1;
+    r.pattern_factors.resize(factors_.held.size());
+    for (std::size_t p = 0; p < factors_.held.size(); ++p) r.pattern_factors[p] = factors_.at(static_cast<int>(p), lambda_);
+    r.load = r.pattern_factors[static_cast<std::size_t>(model_.reported_pattern())] * model_.load_per_factor();
+    r.control_displacement = dof_value(model_.reported_control(), u_);
     r.arc_length = arc_length_;
     r.iterations = iterations;
     r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
-    system_.report(u_, lambda_ * system_.load(), r, with_sections);
+    system_.report(u_, system_.external_force(lambda_), r, with_sections);
     if (model_.report.measure == ReportSpec::Measure::platen) {
         r.load = 0.0;
         for (std::size_t k = 0; k < r.springs.size(); ++k)
@@ -90,7 +116,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
 
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control, bool extrapolate, Scheme scheme) {
     const AnalysisSpec& a = analysis_;
-    StructureProblem problem(system_, u_, lambda_, ubar_, control.freeze_active_after,
+    StructureProblem problem(system_, u_, lambda_, ubar_, ubar_held_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
     problem.set_contact_band(a.residual_tolerance, peak_lambda_);
     NewtonSettings settings;
@@ -494,6 +520,9 @@ double PathFollowing::past_target() const {
 double PathFollowing::begin_stage(std::size_t k) {
     const StageSpec& s = model_.stages[k];
     ++stage_;
+    drive_pattern(s.pattern);
+    analysis_.control = s.control;
+    control_equation_ = system_.equation(dofs_per_node * s.control.node + s.control.dof);
     analysis_.scheme = s.scheme;
     analysis_.initial_increment = s.increment;
     analysis_.adaptive = s.adaptive;
@@ -540,7 +569,7 @@ double PathFollowing::next_increment(double h, double used, const NewtonResult& 
 
 std::string PathFollowing::check_penetration() const {
     if (analysis_.allow_crossing) return {};
-    const std::string found = find_penetration(model_, u_, lambda_);
+    const std::string found = find_penetration(model_, u_, lambda_, &factors_);
     if (found.empty()) return found;
     return "step " + std::to_string(step_) + ": " + found;
 }

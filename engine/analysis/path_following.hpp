@@ -1,5 +1,5 @@
-// Incremental-iterative path following of R(u, λ) = λ·F − f_int(u) = 0 (prescribed
-// displacements scale with λ too). One Newton corrector serves three constraints on the
+// Incremental-iterative path following of R(u, λ) = F_held + λ·F − f_int(u) = 0 (prescribed
+// displacements scale with λ too), λ the factor of the load pattern the stage drives. One Newton corrector serves three constraints on the
 // increment: load control (Δλ fixed), displacement control of one DOF (Batoz & Dhatt), and
 // Crisfield's cylindrical arc length ‖Δu‖ = Δl with the root nearest the previous direction.
 // Increments adapt to the iteration count; a failed increment is reverted and halved.
@@ -90,7 +90,10 @@ private:
     std::string probe_contact_mechanism(const Eigen::VectorXd& u_converged, double lambda_converged);
     void remember_contact(); // after a commit
     std::vector<bool> committed_contact_; // per foundation spring: touching at the last converged step
-    double control_value(const Eigen::VectorXd& u) const;
+    double control_value(const Eigen::VectorXd& u) const; // of the current stage's controlled DOF
+    // A stage that drives another pattern: the one driven so far keeps its factor, λ takes up
+    // the new pattern's, and loads, pressures, prescribed displacements and bases follow.
+    void drive_pattern(int pattern);
     // The converged state as a step's result, in storage kept from step to step (the
     // observers copy what they keep). with_sections: RunControl::report_sections of the run.
     const StepResult& make_result(int step, int iterations, Acceptance rule, bool with_sections);
@@ -112,7 +115,9 @@ private:
     StructuralSystem system_;
     LinearSolver solver_;
     Eigen::VectorXd u_;     // full displacement vector
-    Eigen::VectorXd ubar_;  // reference prescribed displacements, full
+    Eigen::VectorXd ubar_;  // reference prescribed displacements of the driven pattern, full
+    Eigen::VectorXd ubar_held_; // prescribed displacements the held patterns keep, full
+    PatternFactors factors_;
     Eigen::VectorXd previous_increment_; // free DOFs, last converged Δu
     double lambda_ = 0.0;
     double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference

@@ -36,7 +36,8 @@ std::string where(const Point& p) {
 
 } // namespace
 
-std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor) {
+std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor,
+                             const PatternFactors* factors) {
     const std::size_t n = model.nodes.size();
     std::vector<Point> at(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -107,9 +108,9 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
         std::vector<bool> held(n, false);
         for (const FoundationSpring& s : model.springs)
             if (s.unilateral && !s.anchored && s.base == static_cast<int>(b)) held[s.node] = true;
-        const BaseLine& base = model.bases[b];
+        const BaseLine base = factors ? base_in_stage(model.bases[b], *factors) : model.bases[b];
         for (std::size_t i = 0; i < n; ++i) {
-            if (held[i] || base.gap(model.nodes[i].x, model.nodes[i].y, 0.0) < 0.0) continue;
+            if (held[i] || model.bases[b].gap(model.nodes[i].x, model.nodes[i].y, 0.0) < 0.0) continue;
             if (base.gap(at[i].x, at[i].y, load_factor) < 0.0)
                 return "node " + std::to_string(i + 1) + " passed through the rigid base at " + where(at[i]) +
                        " (the base holds only the nodes its springs are on)";

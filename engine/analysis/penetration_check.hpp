@@ -3,6 +3,7 @@
 // does not hold. Contact between members is not modelled, so such a state is not physical.
 #pragma once
 
+#include "load/pattern_factors.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -10,7 +11,9 @@
 
 namespace plastica {
 
-// Empty when the state is admissible; otherwise says what crossed what, and where.
-std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor);
+// Empty when the state is admissible; otherwise says what crossed what, and where. Moving bases
+// stand where the pattern factors put them at λ = load_factor (the first stage's when none given).
+std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor,
+                             const PatternFactors* factors = nullptr);
 
 } // namespace plastica

@@ -29,9 +29,11 @@ struct SpringResult {
 
 struct StepResult {
     int step = 0;                   // 0 is the unloaded state
-    double load_factor = 0.0;       // λ
-    double load = 0.0;              // reported load, λ · Model::load_per_factor()
-    double control_displacement = 0.0;
+    double load_factor = 0.0;       // λ, the factor of the pattern the step's stage drives
+    double load = 0.0;              // reported load: the reported pattern's factor · Model::load_per_factor()
+    double control_displacement = 0.0; // of Model::reported_control()
+    int stage = 1;                  // 1 for [analysis], then 2, 3, … for each [[stage]]
+    std::vector<double> pattern_factors; // per load pattern (Model::patterns), λ for the driven one
     double arc_length = 0.0;        // cumulative path length, monotone
     int iterations = 0;
     Acceptance accepted_by = Acceptance::none; // which rule accepted the step
@@ -40,7 +42,7 @@ struct StepResult {
     std::vector<double> displacement; // 3 per node: ux, uy, rotation
     std::vector<double> reaction;     // 3 per node, at supported and prescribed DOFs (zero elsewhere):
                                       // the force the support exerts on the structure
-    std::vector<double> applied_load; // 3 per node: λ × the reference loads (pressure as it follows)
+    std::vector<double> applied_load; // 3 per node: each pattern's factor × its reference loads (pressure as it follows)
     std::vector<ElementResult> elements;
     std::vector<SpringResult> springs;
     int contact_count = 0;

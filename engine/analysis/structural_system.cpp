@@ -2,6 +2,7 @@
 
 #include "element/distributed_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
+#include "element/released_ends_law.hpp"
 #include "element/segmented_plasticity_law.hpp"
 
 #include <algorithm>
@@ -20,6 +21,10 @@ std::vector<int> number_equations(const Model& model, int& free_count) {
             if (s.fixed[d]) constrained[dofs_per_node * s.node + d] = true;
     for (const PrescribedDisplacement& p : model.prescribed)
         constrained[dofs_per_node * p.node + p.dof] = true;
+    // A rotation that only released member ends meet has no stiffness: held at zero.
+    const std::vector<bool> unattached = model.rotation_unattached();
+    for (std::size_t node = 0; node < unattached.size(); ++node)
+        if (unattached[node]) constrained[dofs_per_node * node + 2] = true;
     std::vector<int> eq(n, -1);
     free_count = 0;
     for (int i = 0; i < n; ++i)
@@ -43,7 +48,7 @@ std::vector<std::vector<int>> assembly_blocks(const Model& model, const std::vec
     return blocks;
 }
 
-std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, HingeEnds ends_served) {
+std::unique_ptr<BasicLaw> make_member_law(const SectionSpec& s, double L0, HingeEnds ends_served) {
     switch (s.plasticity) {
     case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, ends_served);
     case Plasticity::distributed:
@@ -54,16 +59,33 @@ std::unique_ptr<BasicLaw> make_law(const SectionSpec& s, double L0, HingeEnds en
     return std::make_unique<ElasticLaw>(s.E * s.area, s.E * s.inertia, L0);
 }
 
+// The member's law, its released ends condensed out.
+std::unique_ptr<BasicLaw> make_law(const ElementSpec& e, const SectionSpec& s, double L0, HingeEnds ends_served) {
+    std::unique_ptr<BasicLaw> law = make_member_law(s, L0, ends_served);
+    if (!e.released[0] && !e.released[1]) return law;
+    return std::make_unique<ReleasedEndsLaw>(std::move(law), e.released);
+}
+
+std::vector<Eigen::VectorXd> nodal_loads(const Model& model) {
+    std::vector<Eigen::VectorXd> force(model.patterns.size(), Eigen::VectorXd::Zero(model.dof_count()));
+    for (const NodalLoad& l : model.loads)
+        for (int d = 0; d < dofs_per_node; ++d) force[static_cast<std::size_t>(l.pattern)][dofs_per_node * l.node + d] += l.value[d];
+    return force;
+}
+
 } // namespace
 
-StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fixed_load)
+StructuralSystem::StructuralSystem(const Model& model)
     : element_specs_(model.elements), nodes_(model.nodes), foundation_(model), pressure_(model),
-      joint_hinges_(model), fixed_load_(fixed_load), load_(fixed_load),
+      joint_hinges_(model), pattern_loads_(nodal_loads(model)),
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
     for (const FoundationSpring& s : model.springs)
         on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
-    driven_by_platens_ = model.driven_by_platens();
+    for (std::size_t p = 0; p < model.patterns.size(); ++p) platens_only_.push_back(model.driven_by_platens(static_cast<int>(p)));
+    PatternFactors first(model.patterns.size());
+    first.driven = model.analysis.pattern;
+    set_pattern_factors(first);
     const std::vector<HingeEnds>& ends_served = joint_hinges_.ends_served();
     elements_.reserve(model.elements.size());
     for (std::size_t i = 0; i < model.elements.size(); ++i) {
@@ -73,7 +95,7 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
         const SectionSpec& section = model.sections[e.section];
         distributed_.push_back(section.plasticity == Plasticity::distributed);
         elastic_ea_.push_back(section.plasticity == Plasticity::none ? section.E * section.area : 0.0);
-        elements_.emplace_back(a, b, make_law(section, std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
+        elements_.emplace_back(a, b, make_law(e, section, std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
         std::vector<int> held;
         for (int local = 0; local < 6; ++local)
             if (equation_[dofs_per_node * (local < 3 ? e.node_i : e.node_j) + local % 3] < 0) held.push_back(local);
@@ -84,6 +106,18 @@ StructuralSystem::StructuralSystem(const Model& model, const Eigen::VectorXd& fi
         if (equation_[i] >= 0) dof_of_equation_[static_cast<std::size_t>(equation_[i])] = i;
     internal_ = Eigen::VectorXd::Zero(dof_count());
     coupling_ = Eigen::VectorXd::Zero(free_count_);
+}
+
+void StructuralSystem::set_pattern_factors(const PatternFactors& factors) {
+    fixed_load_ = pattern_loads_[static_cast<std::size_t>(factors.driven)];
+    held_fixed_load_ = Eigen::VectorXd::Zero(fixed_load_.size());
+    for (std::size_t p = 0; p < pattern_loads_.size(); ++p)
+        if (factors.constant(static_cast<int>(p)) != 0.0) held_fixed_load_ += factors.constant(static_cast<int>(p)) * pattern_loads_[p];
+    load_ = fixed_load_;
+    held_load_ = held_fixed_load_;
+    pressure_.set_pattern_factors(factors);
+    foundation_.set_pattern_factors(factors);
+    driven_by_platens_ = platens_only_[static_cast<std::size_t>(factors.driven)];
 }
 
 bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& ubar, double load_factor,
@@ -124,6 +158,8 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
     if (!pressure_.empty()) {
         load_ = fixed_load_;
         pressure_.add_forces(u, load_);
+        held_load_ = held_fixed_load_;
+        pressure_.add_held_forces(u, held_load_);
     }
     foundation_.evaluate(u, load_factor, freeze_active);
     for (std::size_t s = 0; s < foundation_.size(); ++s) {
@@ -169,7 +205,7 @@ void StructuralSystem::element_stiffness(std::size_t e, Matrix6& k) const {
         elements_[e].tangent(k, path_force);
     else
         elements_[e].tangent(k);
-    if (!pressure_.empty() && pressure_.pressure(e) != 0.0) k += pressure_.stiffness(e, evaluated_load_factor_);
+    if (!pressure_.empty() && pressure_.loads(e)) k += pressure_.stiffness(e, evaluated_load_factor_);
 }
 
 bool StructuralSystem::element_tangent(std::size_t e, Matrix6& k) const {
@@ -245,7 +281,7 @@ RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, d
         const double k[3] = {spring.kx, spring.ky, spring.krot};
         for (std::size_t d = 0; d < 3; ++d) springs[at + d] += k[d] * std::abs(u_full[at + d]);
     }
-    const double load = std::abs(load_factor) * gather(load_).norm();
+    const double load = gather(external_force(load_factor)).norm();
     if (!(load > 0.0)) return {};
     const double eps = std::numeric_limits<double>::epsilon();
     return {eps * floor.norm() / load, eps * springs.norm() / load};

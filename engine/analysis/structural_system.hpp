@@ -24,8 +24,12 @@ struct RoundOffFloor {
 
 class StructuralSystem {
 public:
-    // fixed_load: the reference nodal loads (full DOF vector), which do not follow the structure.
-    StructuralSystem(const Model& model, const Eigen::VectorXd& fixed_load);
+    // The model's nodal loads, pattern by pattern, are the reference loads that do not follow
+    // the structure; [analysis]'s pattern is driven first.
+    explicit StructuralSystem(const Model& model);
+    // A new stage: the driven pattern's loads, pressures and moving bases scale with λ; the
+    // others keep their factors (PatternFactors).
+    void set_pattern_factors(const PatternFactors& factors);
 
     int dof_count() const { return static_cast<int>(equation_.size()); }
     int free_count() const { return free_count_; }
@@ -43,6 +47,10 @@ public:
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū + platens, free DOFs
     // Reference loads at the evaluated state, per unit λ: the fixed ones plus follower pressure.
     const Eigen::VectorXd& load() const { return load_; }
+    // The held patterns' loads at the evaluated state (full DOF vector): constant in λ.
+    const Eigen::VectorXd& held_load() const { return held_load_; }
+    // The external force at the evaluated state and λ: held + λ·load.
+    Eigen::VectorXd external_force(double load_factor) const { return held_load_ + load_factor * load_; }
     // The tangent at the last evaluation, assembled on first use.
     const SparseMatrix& tangent() const;
     // The tangent of the last evaluation takes these axial forces (one per member) into the
@@ -103,8 +111,12 @@ private:
     Foundation foundation_;
     FollowerPressure pressure_;
     JointHinges joint_hinges_;
-    Eigen::VectorXd fixed_load_;
+    std::vector<Eigen::VectorXd> pattern_loads_; // per pattern, the nodal loads
+    std::vector<bool> platens_only_;            // per pattern: driven by moving bases alone
+    Eigen::VectorXd fixed_load_;                // the driven pattern's
+    Eigen::VectorXd held_fixed_load_;           // the held patterns' at their factors
     Eigen::VectorXd load_;
+    Eigen::VectorXd held_load_;
     int free_count_ = 0;
     std::vector<int> equation_;
     std::vector<int> dof_of_equation_; // the inverse of equation_ on the free DOFs

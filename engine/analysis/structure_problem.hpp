@@ -1,5 +1,6 @@
-// The structure as a Newton problem: equilibrium λ·F − f_int(u) = 0 on the free DOFs, with
-// prescribed displacements scaled by λ too (their coupling K_fp·ū joins the load direction).
+// The structure as a Newton problem: equilibrium F_held + λ·F − f_int(u) = 0 on the free DOFs,
+// with prescribed displacements ū_held + λ·ū (their coupling K_fp·ū joins the load direction).
+// F and ū are the driven pattern's; F_held and ū_held the held patterns' (PatternFactors).
 #pragma once
 
 #include "analysis/structural_system.hpp"
@@ -10,11 +11,12 @@ namespace plastica {
 class StructureProblem final : public NewtonProblem {
 public:
     // u (full DOF vector) and lambda are the state, moved in place; ubar is the reference
-    // prescribed displacement (full); the reference loads are the system's (they may follow u).
+    // prescribed displacement (full), ubar_held the held one; the reference loads are the
+    // system's (they may follow u).
     // Contact sets are frozen from iteration `contact_freeze`, hinge states from `hinge_freeze`,
     // fibre branches of distributed plasticity from `fibre_freeze`.
     StructureProblem(StructuralSystem& system, Eigen::VectorXd& u, double& lambda,
-                     const Eigen::VectorXd& ubar,
+                     const Eigen::VectorXd& ubar, const Eigen::VectorXd& ubar_held,
                      int contact_freeze, int hinge_freeze, int fibre_freeze);
 
     // The first tangent (at an extrapolated start) takes these axial forces, one per member, in
@@ -31,7 +33,8 @@ public:
     double state_norm() const override { return u_free_.norm(); }
     double round_off_floor() const override { return system_.round_off_floor(u_, lambda_).total; }
     // Driven by platens alone, the residual is measured against the force they press with
-    // (λ times their penalty stiffness would be the force on a rigid structure, far above it).
+    // (λ times their penalty stiffness would be the force on a rigid structure, far above it);
+    // loads held from earlier stages add their size.
     double force_scale(double level) const override;
     // A contact whose spring force would stay below this fraction of the residual tolerance (at
     // the reference load level) is left as it is, open or closed: either way the residual can
@@ -46,8 +49,10 @@ private:
     Eigen::VectorXd& u_;
     double& lambda_;
     const Eigen::VectorXd& ubar_;
+    const Eigen::VectorXd& ubar_held_;
     Eigen::VectorXd u_free_;
-    Eigen::VectorXd load_, internal_; // the free DOFs' reference load and internal force
+    Eigen::VectorXd load_, held_, internal_; // the free DOFs' reference load, held load and internal force
+    double held_scale_ = 0.0;                // ‖held‖
     Eigen::VectorXd residual_;
     Eigen::VectorXd load_direction_;
     std::vector<int> prescribed_; // full DOF indices with ū ≠ 0

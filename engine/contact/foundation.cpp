@@ -8,11 +8,16 @@ Foundation::Foundation(const Model& model)
         const double n = std::hypot(b.normal[0], b.normal[1]);
         b.normal = {b.normal[0] / n, b.normal[1] / n};
     }
+    reference_bases_ = bases_;
     states_.resize(springs_.size());
     for (std::size_t k = 0; k < springs_.size(); ++k) {
         states_[k].node = springs_[k].node;
         states_[k].unilateral = springs_[k].unilateral;
     }
+}
+
+void Foundation::set_pattern_factors(const PatternFactors& factors) {
+    for (std::size_t b = 0; b < bases_.size(); ++b) bases_[b] = base_in_stage(reference_bases_[b], factors);
 }
 
 void Foundation::evaluate(const Eigen::VectorXd& u, double load_factor, bool freeze_active) {

@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "load/pattern_factors.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -55,13 +56,18 @@ public:
 
     int active_contacts() const;
 
+    // A new stage: each base moves with λ if its pattern is driven, else stays where its held
+    // factor put it.
+    void set_pattern_factors(const PatternFactors& factors);
+
 private:
     // The unit direction a unilateral spring pushes: its own (anchored) or the base's normal.
     Eigen::Vector2d normal_of(const FoundationSpring& spring) const;
 
     std::vector<FoundationSpring> springs_;
     std::vector<Node> nodes_;
-    std::vector<BaseLine> bases_;
+    std::vector<BaseLine> reference_bases_; // as the model gives them (normals of unit length)
+    std::vector<BaseLine> bases_;           // in the current stage (base_in_stage)
     std::vector<SpringState> states_;
     bool changed_ = false;
     double undecided_force_ = 0.0;

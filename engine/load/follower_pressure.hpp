@@ -7,6 +7,7 @@
 // linearly at those nodes; the equilibrium it reaches is the exact one).
 #pragma once
 
+#include "load/pattern_factors.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -19,18 +20,28 @@ public:
     explicit FollowerPressure(const Model& model);
 
     bool empty() const { return loaded_.empty(); }
-    // Nodal forces per unit load factor at displacements u (full vector, 3 per node).
-    void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& force) const;
-    // −∂(λ·forces)/∂u of element e's chord (the load stiffness), symmetric part, in the
+    // Nodal forces per unit load factor of the driven pattern at displacements u (full vector,
+    // 3 per node).
+    void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& force) const { add_forces(u, pressure_, force); }
+    // The held patterns' nodal forces at u (constant factors, PatternFactors).
+    void add_held_forces(const Eigen::VectorXd& u, Eigen::VectorXd& force) const { add_forces(u, held_, force); }
+    // −∂(forces at λ)/∂u of element e's chord (the load stiffness), symmetric part, in the
     // element's DOF order [u_i v_i θ_i u_j v_j θ_j]; zero for an element without pressure.
     Eigen::Matrix<double, 6, 6> stiffness(std::size_t element, double load_factor) const;
-    double pressure(std::size_t element) const { return pressure_[element]; }
+    bool loads(std::size_t element) const { return pressure_[element] != 0.0 || held_[element] != 0.0; }
+
+    // A new stage: the driven pattern's pressures scale with λ, the others are held.
+    void set_pattern_factors(const PatternFactors& factors);
 
 private:
+    void add_forces(const Eigen::VectorXd& u, const std::vector<double>& pressure, Eigen::VectorXd& force) const;
+
+    std::vector<ElementPressure> reference_;
     std::vector<ElementSpec> elements_;
     std::vector<Node> nodes_;
-    std::vector<double> pressure_;  // per element, reference value
-    std::vector<std::size_t> loaded_; // elements with p ≠ 0
+    std::vector<double> pressure_;    // per element, the driven pattern's reference value
+    std::vector<double> held_;        // per element, the held patterns' pressure
+    std::vector<std::size_t> loaded_; // elements with a pressure in any pattern
 };
 
 } // namespace plastica

@@ -31,6 +31,18 @@ bool Model::has_moving_base() const {
     return false;
 }
 
+bool Model::has_moving_base(int pattern) const {
+    for (const BaseLine& b : bases)
+        if (b.moves() && b.pattern == pattern) return true;
+    return false;
+}
+
+bool Model::loaded(int pattern) const {
+    auto in = [pattern](const auto& item) { return item.pattern == pattern; };
+    return std::any_of(loads.begin(), loads.end(), in) || std::any_of(pressures.begin(), pressures.end(), in) ||
+           std::any_of(prescribed.begin(), prescribed.end(), in);
+}
+
 bool Model::has_unilateral_base() const {
     for (const auto& s : springs)
         if (s.unilateral) return true;
@@ -38,9 +50,10 @@ bool Model::has_unilateral_base() const {
 }
 
 namespace {
-// The first non-zero load as a direction in (fx, fy, moment) space.
-std::array<double, 3> first_direction(const std::vector<NodalLoad>& loads) {
+// The first non-zero load of a pattern as a direction in (fx, fy, moment) space.
+std::array<double, 3> first_direction(const std::vector<NodalLoad>& loads, int pattern) {
     for (const NodalLoad& l : loads) {
+        if (l.pattern != pattern) continue;
         const double n = std::sqrt(l.value[0] * l.value[0] + l.value[1] * l.value[1] + l.value[2] * l.value[2]);
         if (n > 0.0) return {l.value[0] / n, l.value[1] / n, l.value[2] / n};
     }
@@ -49,16 +62,25 @@ std::array<double, 3> first_direction(const std::vector<NodalLoad>& loads) {
 } // namespace
 
 bool Model::uniform_pressure_only() const {
-    if (pressures.empty() || !loads.empty()) return false;
-    for (const ElementPressure& p : pressures)
-        if (p.value != pressures.front().value) return false;
-    return true;
+    const int pattern = reported_pattern();
+    const ElementPressure* first = nullptr;
+    for (const NodalLoad& l : loads)
+        if (l.pattern == pattern) return false;
+    for (const ElementPressure& p : pressures) {
+        if (p.pattern != pattern) continue;
+        if (!first) first = &p;
+        if (p.value != first->value) return false;
+    }
+    return first != nullptr;
 }
 
 bool Model::loads_parallel() const {
-    if (!pressures.empty()) return uniform_pressure_only(); // a pressure has no one direction
-    const std::array<double, 3> d = first_direction(loads);
+    const int pattern = reported_pattern();
+    for (const ElementPressure& p : pressures)
+        if (p.pattern == pattern) return uniform_pressure_only(); // a pressure has no one direction
+    const std::array<double, 3> d = first_direction(loads, pattern);
     for (const NodalLoad& l : loads) {
+        if (l.pattern != pattern) continue;
         // Parallel to d: no component across it (a force with a moment is not parallel to a force).
         const double along = l.value[0] * d[0] + l.value[1] * d[1] + l.value[2] * d[2];
         double across = 0.0;
@@ -68,13 +90,41 @@ bool Model::loads_parallel() const {
     return true;
 }
 
+bool Model::has_releases() const {
+    return std::any_of(elements.begin(), elements.end(), [](const ElementSpec& e) { return e.released[0] || e.released[1]; });
+}
+
+std::vector<bool> Model::rotation_unattached() const {
+    std::vector<bool> unattached(nodes.size(), false);
+    if (!has_releases()) return unattached;
+    std::vector<int> held_ends(nodes.size(), 0), ends(nodes.size(), 0);
+    for (const ElementSpec& e : elements) {
+        ++ends[static_cast<std::size_t>(e.node_i)], ++ends[static_cast<std::size_t>(e.node_j)];
+        if (!e.released[0]) ++held_ends[static_cast<std::size_t>(e.node_i)];
+        if (!e.released[1]) ++held_ends[static_cast<std::size_t>(e.node_j)];
+    }
+    for (std::size_t n = 0; n < nodes.size(); ++n) unattached[n] = ends[n] > 0 && held_ends[n] == 0;
+    for (const Support& s : supports)
+        if (s.fixed[2]) unattached[static_cast<std::size_t>(s.node)] = false;
+    for (const PrescribedDisplacement& p : prescribed)
+        if (p.dof == 2) unattached[static_cast<std::size_t>(p.node)] = false;
+    for (const FoundationSpring& s : springs)
+        if (s.krot != 0.0) unattached[static_cast<std::size_t>(s.node)] = false;
+    return unattached;
+}
+
 double Model::load_per_factor() const {
     if (report.measure == ReportSpec::Measure::factor) return report.load_scale;
-    if (uniform_pressure_only()) return report.load_scale * std::abs(pressures.front().value);
-    if (loads.empty()) return report.load_scale;
-    const std::array<double, 3> d = first_direction(loads);
+    const int pattern = reported_pattern();
+    if (uniform_pressure_only())
+        for (const ElementPressure& p : pressures)
+            if (p.pattern == pattern) return report.load_scale * std::abs(p.value);
+    const std::array<double, 3> d = first_direction(loads, pattern);
     double total = 0.0;
-    for (const NodalLoad& l : loads) total += l.value[0] * d[0] + l.value[1] * d[1] + l.value[2] * d[2];
+    bool any = false;
+    for (const NodalLoad& l : loads)
+        if (l.pattern == pattern) total += l.value[0] * d[0] + l.value[1] * d[1] + l.value[2] * d[2], any = true;
+    if (!any) return report.load_scale;
     return report.load_scale * std::abs(total);
 }
 

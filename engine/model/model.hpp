@@ -75,6 +75,7 @@ struct ElementSpec {
     int node_i = 0;
     int node_j = 0;
     int section = 0;
+    std::array<bool, 2> released{false, false}; // moment releases at node_i, node_j (a pin in the member)
 };
 
 struct Support {
@@ -82,9 +83,13 @@ struct Support {
     std::array<bool, dofs_per_node> fixed{false, false, false};
 };
 
+// Loads, pressures, prescribed displacements and moving bases each belong to a load pattern
+// (Model::patterns; 0 is "main"). A stage drives one pattern's factor; the others stay at the
+// factor they last had (OpenSees' loadConst).
 struct NodalLoad {
     int node = 0;
     std::array<double, dofs_per_node> value{0.0, 0.0, 0.0}; // fx, fy, moment; scaled by λ
+    int pattern = 0;
 };
 
 // Pressure on an element, per unit current length, normal to its deformed chord (a follower
@@ -92,12 +97,14 @@ struct NodalLoad {
 struct ElementPressure {
     int element = 0;
     double value = 0.0;
+    int pattern = 0;
 };
 
 struct PrescribedDisplacement {
     int node = 0;
     int dof = 0;
     double value = 0.0; // reference value, scaled by λ
+    int pattern = 0;
 };
 
 // A straight rigid base: points x with (x − p)·normal < 0 penetrate it, where p = point + λ·motion
@@ -106,6 +113,7 @@ struct BaseLine {
     std::array<double, 2> point{0.0, 0.0};
     std::array<double, 2> normal{0.0, 1.0};
     std::array<double, 2> motion{0.0, 0.0};
+    int pattern = 0; // whose factor moves it
 
     bool moves() const { return motion[0] != 0.0 || motion[1] != 0.0; }
     // The gap of a point at load factor λ.
@@ -151,6 +159,7 @@ struct AnalysisSpec {
     std::optional<double> target_load_factor;
     std::optional<double> target_displacement; // on the control DOF, signed as reported
     DofRef control;                            // displacement control and reporting
+    int pattern = 0;                           // the load pattern λ drives (Model::patterns)
     // Self-contact is not modelled: a structure that passes through itself stops the run,
     // unless the scene allows it (a cantilever rolled into two turns, say).
     bool allow_crossing = false;
@@ -165,6 +174,8 @@ struct StageSpec {
     bool adaptive = false;
     std::optional<double> target_load_factor;
     std::optional<double> target_displacement; // on the control DOF, signed as reported
+    int pattern = 0;                           // the load pattern it drives
+    DofRef control;                            // its controlled DOF (the previous stage's unless named)
 };
 
 struct ReportSpec {
@@ -194,6 +205,7 @@ struct Model {
     std::vector<PrescribedDisplacement> prescribed;
     std::vector<FoundationSpring> springs;
     std::vector<BaseLine> bases; // the rigid base lines of unilateral springs (FoundationSpring::base)
+    std::vector<std::string> patterns{"main"}; // load pattern names, "main" first
     AnalysisSpec analysis;
     std::vector<StageSpec> stages; // after the first ([analysis]), in order
     ReportSpec report;
@@ -207,14 +219,30 @@ struct Model {
     bool has_moving_base() const;
     // Whether loads, pressures or prescribed displacements act (scaled by λ).
     bool loaded() const { return !loads.empty() || !pressures.empty() || !prescribed.empty(); }
-    // Nothing but moving bases drives the structure.
-    bool driven_by_platens() const { return !loaded() && has_moving_base(); }
-    // Whether the reference loads have one direction (parallel forces, or moments only).
+    // Whether pattern p has loads, pressures or prescribed displacements.
+    bool loaded(int pattern) const;
+    // Whether a base of pattern p moves.
+    bool has_moving_base(int pattern) const;
+    // Nothing but moving bases drives pattern p.
+    bool driven_by_platens(int pattern) const { return !loaded(pattern) && has_moving_base(pattern); }
+    // The same for the reported pattern.
+    bool driven_by_platens() const { return driven_by_platens(reported_pattern()); }
+    // The pattern the curve reports, and the controlled DOF it reports: the last stage's.
+    int reported_pattern() const { return stages.empty() ? analysis.pattern : stages.back().pattern; }
+    const DofRef& reported_control() const { return stages.empty() ? analysis.control : stages.back().control; }
+    // Whether the reported pattern's loads have one direction (parallel forces, or moments only).
     bool loads_parallel() const;
-    // Whether the only load is one pressure, equal on every loaded element (it is then reported).
+    // Whether the reported pattern's only load is one pressure, equal on every loaded element
+    // (it is then reported).
     bool uniform_pressure_only() const;
-    // The reported load per unit load factor (ReportSpec::measure, load_scale included).
+    // The reported load per unit factor of the reported pattern (ReportSpec::measure, load_scale included).
     double load_per_factor() const;
+    // Whether some member end is released.
+    bool has_releases() const;
+    // Per node: whether its rotation meets no stiffness at all (every member end there is
+    // released, and no support, prescribed rotation or rotational spring holds it). Such a
+    // rotation is held at zero: it moves nothing.
+    std::vector<bool> rotation_unattached() const;
 };
 
 } // namespace plastica

@@ -7,7 +7,9 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +30,7 @@ public:
 
     void attach(const ViewGeometry& view, const AddProp& add) override {
         view_ = view;
-        draw_lines(view, 0.0);
+        draw_lines(view, nullptr);
         vtkCellArray* verts = base_data_->GetVerts();
         verts->InitTraversal();
         vtkIdType n;
@@ -42,11 +44,11 @@ public:
         add(anchors_.prop(), true);
     }
 
-    // A platen is drawn where the step's load factor has moved it.
+    // A platen is drawn where the step has moved it.
     void show(vtkUnstructuredGrid* step) override {
         if (!base_data_->GetCellData()->GetArray(result::name::base_motion)) return;
         line_.clear();
-        draw_lines(view_, field_value(step, result::name::load_factor));
+        draw_lines(view_, step);
     }
 
     std::vector<LegendEntry> legend() const override {
@@ -57,9 +59,12 @@ public:
 private:
     // Each base line as a bar with hatching on the far side from the structure, clipped to the
     // drawing so the legend column stays clear.
-    void draw_lines(const ViewGeometry& view, double load_factor) {
+    // step: where platens stand (none: at the start).
+    void draw_lines(const ViewGeometry& view, vtkUnstructuredGrid* step) {
         vtkDataArray* kind = base_data_->GetCellData()->GetArray(result::name::base_kind);
         vtkDataArray* motion = base_data_->GetCellData()->GetArray(result::name::base_motion);
+        vtkDataArray* pattern = base_data_->GetCellData()->GetArray(result::name::base_pattern);
+        vtkDataArray* factors = step ? step->GetFieldData()->GetArray(result::name::pattern_factors) : nullptr;
         vtkCellArray* lines = base_data_->GetLines();
         lines->InitTraversal();
         vtkIdType n;
@@ -72,7 +77,13 @@ private:
             double a[3], b[3];
             base_data_->GetPoint(ids[0], a);
             base_data_->GetPoint(ids[n - 1], b);
-            if (motion)
+            // The factor of the pattern that moves the line: the step's λ with one pattern.
+            double load_factor = step ? field_value(step, result::name::load_factor) : 0.0;
+            if (step && pattern && factors) {
+                const vtkIdType p = static_cast<vtkIdType>(pattern->GetComponent(first_line + c, 0));
+                load_factor = p >= 0 && p < factors->GetNumberOfTuples() ? factors->GetComponent(p, 0) : 0.0;
+            }
+            if (motion && step)
                 for (int k = 0; k < 2; ++k) {
                     a[k] += load_factor * motion->GetComponent(first_line + c, k);
                     b[k] += load_factor * motion->GetComponent(first_line + c, k);

@@ -32,21 +32,15 @@ public:
         if (!states[0] || !states[1] || !use[0] || !use[1]) return;
         const double r = view_.pixels(4.5);
         for (vtkIdType c = 0; c < step->GetNumberOfCells(); ++c) {
-            vtkIdType n;
-            const vtkIdType* ids;
-            step->GetCellPoints(c, n, ids);
-            if (n != 2) continue;
             double a[3], b[3];
-            step->GetPoint(ids[0], a);
-            step->GetPoint(ids[1], b);
+            if (!member_ends(step, c, a, b)) continue;
             for (int end = 0; end < 2; ++end) {
                 const auto state = static_cast<result::HingeCode>(states[end]->GetComponent(c, 0));
                 if (state == result::HingeCode::elastic) continue;
                 const double u = std::clamp(use[end]->GetComponent(c, 0), 0.0, 1.0);
                 // A quarter of the element in from its end, so the two ends meeting at a node stay apart.
-                const double* from = end == 0 ? a : b;
-                const double* to = end == 0 ? b : a;
-                const double x = from[0] + 0.25 * (to[0] - from[0]), y = from[1] + 0.25 * (to[1] - from[1]);
+                double x, y;
+                along_member(a, b, end, 0.25, x, y);
                 if (state == result::HingeCode::yielding) {
                     markers_.disc(x, y, r * (0.5 + 0.6 * u), mix(colour::hinge_yielding_low, colour::hinge_yielding_high, u));
                 } else {
@@ -75,5 +69,22 @@ private:
 } // namespace
 
 std::unique_ptr<Layer> hinge_layer(const SeriesSummary& summary) { return std::make_unique<HingeLayer>(summary); }
+
+bool member_ends(vtkUnstructuredGrid* step, vtkIdType c, double a[3], double b[3]) {
+    vtkIdType n;
+    const vtkIdType* ids;
+    step->GetCellPoints(c, n, ids);
+    if (n != 2) return false;
+    step->GetPoint(ids[0], a);
+    step->GetPoint(ids[1], b);
+    return true;
+}
+
+void along_member(const double a[3], const double b[3], int end, double t, double& x, double& y) {
+    const double* from = end == 0 ? a : b;
+    const double* to = end == 0 ? b : a;
+    x = from[0] + t * (to[0] - from[0]);
+    y = from[1] + t * (to[1] - from[1]);
+}
 
 } // namespace plastica::render
