@@ -35,7 +35,7 @@ SegmentedPlasticityLaw::SegmentedPlasticityLaw(const SectionSpec& section, doubl
     basic_map_.assign(n, Eigen::Matrix3d::Zero());
     for (std::size_t s = 0; s < n; ++s) {
         const double l = length[s] * L0 / total;
-        segments_.emplace_back(section, l, integration_points, segment_regularisation);
+        segments_.emplace_back(section, l, integration_points, segment_regularisation, DistributedPlasticityLaw::Axial::uniform_strain);
         bounds_.push_back(bounds_.back() + l);
         basic_map_[s](0, 0) = l / L0;
         near_[s] << 0.0, 0.0, 1.0 / l, 1.0, 1.0 / l, 0.0;
