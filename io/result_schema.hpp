@@ -1,7 +1,7 @@
 // The result schema: the one list of what a result series holds. Every array of a
 // step's VTU and of base.vtp, with where it lives, its type and components, what it measures and
 // which scenes have it, and the codes of the integer states. The VTU writer, the render stage,
-// the README's table (`plastica schema` prints it; a test compares) and the tests read it, so a
+// docs/output.md's table (`plastica schema` prints it; a test compares) and the tests read it, so a
 // name is spelled in one place.
 #pragma once
 
@@ -62,7 +62,7 @@ std::vector<int> active_patterns(const Model& model);
 std::vector<std::string> names(Where where, const Model& model);
 // The unit of an array's values from the scene's length and force units ("" when unnamed).
 std::string unit(const Array& array, const std::string& length_unit, const std::string& force_unit);
-// The schema as the README's Markdown table.
+// The schema as docs/output.md's Markdown table.
 std::string markdown_table();
 
 // Names, so that a misspelt one does not compile instead of drawing nothing.

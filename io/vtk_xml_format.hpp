@@ -12,7 +12,7 @@
 
 namespace plastica {
 
-// ParaView 5.11 reads all three; the default is chosen by measurement (README, Performance).
+// ParaView 5.11 reads all three; the default is chosen by measurement (docs/performance.md).
 enum class Compression { none, lz4, zlib };
 
 std::string unstructured_grid_xml(const XmlDataset& data, Compression compression = Compression::none);

@@ -269,6 +269,18 @@ std::vector<StabilityCase> robustness_cases() {
                      }});
     cases.push_back({"two-bay frame, three members at a joint", "sway to 5 × the peak's",
                      embedded_scene("gallery/two_bay_frame"), done, past_peak(5.0)});
+    // Gravity held, then pushed until the pinned brace yields: the sway load is N_y·cos θ less
+    // the leaning columns' P–Δ shear (ΣP + N_y·sin θ)·δ/h (tests/test_releases.cpp; 0.13 % at δ = 0.1).
+    cases.push_back({"braced frame, pinned beam and brace", "gravity held, sway to 0.1 m",
+                     embedded_scene("gallery/braced_frame"), done, [](const Steps& steps, const RunSummary&) -> std::string {
+                         const StepResult& last = steps.back();
+                         const double Ny = 0.05 * 0.05 * 3.55e5, d = last.control_displacement, chord = std::hypot(6.0 + d, 4.0);
+                         const double expected = Ny * (6.0 + d) / chord - (720.0 + Ny * 4.0 / chord) * d / 4.0;
+                         return std::abs(last.load / expected - 1.0) <= 2.5e-3
+                                    ? "" : "H = " + std::to_string(last.load) + " at δ = " + std::to_string(d) + ", expected " + std::to_string(expected);
+                     }});
+    cases.push_back({"ring wedged by a held platen", "external pressure to 1e-3",
+                     embedded_scene("gallery/ring_wedged_then_pressed"), done, nullptr});
     cases.push_back({"pipe on tensionless soil", "crown deflection 0.4 R", embedded_scene("gallery/pipe_on_soil"), done,
                      [](const Steps& steps, const RunSummary&) -> std::string {
                          // Equilibrium with the soil: the bed carries the half pipe's load.

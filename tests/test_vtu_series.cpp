@@ -289,8 +289,8 @@ TEST_CASE("Every shipped scene writes exactly the schema's arrays it needs, of t
     }
 }
 
-TEST_CASE("The README's table of result arrays is the schema's", "[output]") {
-    std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/README.md");
+TEST_CASE("docs/output.md's table of result arrays is the schema's", "[output]") {
+    std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/docs/output.md");
     std::stringstream text;
     text << in.rdbuf();
     CHECK_THAT(text.str(), Catch::Contains(result::markdown_table()));

@@ -17,7 +17,7 @@ constexpr double round_off_margin = 10.0;
 constexpr double unapplied_correction_share = 1e-2;
 // A correction that multiplied a residual within the stagnation band this many times over crossed
 // a kink of a piecewise-linear law; it is halved, at most this many times in an increment. By
-// measurement (README, Stability): 100 left the catenary beam with half its yield stress stopped,
+// measurement (docs/stability.md): 100 left the catenary beam with half its yield stress stopped,
 // 10 moved the whole ring's path more than 30 and stopped the 80-element beam with twice it.
 constexpr double kink_growth = 30.0;
 constexpr int max_backtracks = 4;
