@@ -210,6 +210,9 @@ std::string PathFollowing::initial_mechanism() {
     // Singular to double precision is not the same as free: the supports decide which.
     if (const std::string motion = unrestrained_rigid_motion(model_); !motion.empty())
         return "the structure is a mechanism before loading: " + where + " is free (add a support or a spring); " + motion;
+    // Nor are the releases: the same structure with its member ends held tells.
+    if (const std::string released = release_mechanism(); !released.empty())
+        return "the structure is a mechanism before loading: " + where + " is free, " + released;
     std::ostringstream s;
     s.precision(2);
     s << "the stiffness matrix is singular to double precision, although the supports hold every rigid-body "
@@ -218,6 +221,30 @@ std::string PathFollowing::initial_mechanism() {
       << "more than the 16 digits of a double (very many or very short elements, a spring or a section far "
          "stiffer than the rest, or coordinates far from 1): use fewer elements or stiffnesses closer together";
     return s.str();
+}
+
+std::string PathFollowing::release_mechanism() const {
+    if (!model_.has_releases()) return {};
+    Model held = model_;
+    std::vector<std::string> ends;
+    for (ElementSpec& e : held.elements) {
+        for (int end = 0; end < 2; ++end) {
+            if (!e.released[end]) continue;
+            const Node& n = model_.nodes[end == 0 ? e.node_i : e.node_j];
+            if (ends.size() < 4) ends.push_back(point_text(model_, n.x, n.y));
+            else if (ends.size() == 4) ends.push_back("…");
+        }
+        e.released = {false, false};
+    }
+    StructuralSystem rigid(held);
+    rigid.evaluate(u_, ubar_, lambda_, false);
+    LinearSolver solver;
+    if (!solver.factorize(rigid.tangent()) || solver.pivot_ratio() <= 10 * LinearSolver::zero_pivot) return {};
+    std::string list;
+    for (const std::string& e : ends) list += (list.empty() ? "" : ", ") + e;
+    return "because of the moment releases (released member ends at " + list +
+           "): with those ends held it is stable. A frame of pinned members needs a brace, a support "
+           "or a spring to hold it (or release fewer ends)";
 }
 
 std::string PathFollowing::probe_contact_mechanism(const Eigen::VectorXd& u_converged, double lambda_converged) {

@@ -89,6 +89,9 @@ private:
     // response from the converged state (the system is left there: revert after).
     std::string probe_contact_mechanism(const Eigen::VectorXd& u_converged, double lambda_converged);
     void remember_contact(); // after a commit
+    // Where the unloaded tangent is singular although the supports hold every rigid motion: the
+    // mechanism the member-end releases leave, in words, if holding them makes it stable; else empty.
+    std::string release_mechanism() const;
     std::vector<bool> committed_contact_; // per foundation spring: touching at the last converged step
     double control_value(const Eigen::VectorXd& u) const; // of the current stage's controlled DOF
     // A stage that drives another pattern: the one driven so far keeps its factor, λ takes up
