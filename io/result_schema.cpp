@@ -108,6 +108,7 @@ bool present(const Array& a, const Model& m) {
 
 std::vector<int> active_patterns(const Model& m) {
     std::vector<int> out;
+    if (m.patterns.size() < 2) return out; // the common case, once per curve row and VTU: no scan of the loads
     for (std::size_t p = 0; p < m.patterns.size(); ++p)
         if (m.loaded(static_cast<int>(p)) || m.has_moving_base(static_cast<int>(p))) out.push_back(static_cast<int>(p));
     if (out.size() < 2) out.clear();

@@ -64,11 +64,13 @@ void PathFollowing::drive_pattern(int pattern) {
     // limit against the stiffness the structure has where the stage starts.
     peak_lambda_ = std::abs(lambda_);
     system_.evaluate(u_, ubar_, lambda_, false);
-    initial_flexibility_ = 0.0;
-    if (system_.free_count() > 0 && solver_.factorize(system_.tangent())) {
-        const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
-        initial_flexibility_ = f.dot(solver_.solve(f));
-    }
+    initial_flexibility_ = load_flexibility();
+}
+
+double PathFollowing::load_flexibility() {
+    if (system_.free_count() == 0 || !solver_.factorize(system_.tangent())) return 0.0;
+    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+    return f.dot(solver_.solve(f));
 }
 
 const StepResult& PathFollowing::make_result(int step, int iterations, Acceptance rule, bool with_sections) {
@@ -341,10 +343,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     system_.evaluate(u_, ubar_, lambda_, false);
     system_.commit();
     remember_contact();
-    if (system_.free_count() > 0 && solver_.factorize(system_.tangent())) {
-        const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
-        initial_flexibility_ = f.dot(solver_.solve(f));
-    }
+    initial_flexibility_ = load_flexibility();
     if (!publish(make_result(0, 0, Acceptance::none, control.report_sections))) return finish(0);
     path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
 

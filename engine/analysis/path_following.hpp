@@ -92,6 +92,9 @@ private:
     // Where the unloaded tangent is singular although the supports hold every rigid motion: the
     // mechanism the member-end releases leave, in words, if holding them makes it stable; else empty.
     std::string release_mechanism() const;
+    // f·K⁻¹f of the driven load direction at the last evaluation (0 where K is singular): the
+    // reference of Bergan's current stiffness parameter in tangent_shows_limit().
+    double load_flexibility();
     std::vector<bool> committed_contact_; // per foundation spring: touching at the last converged step
     double control_value(const Eigen::VectorXd& u) const; // of the current stage's controlled DOF
     // A stage that drives another pattern: the one driven so far keeps its factor, λ takes up
