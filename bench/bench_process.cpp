@@ -1,5 +1,5 @@
 // Whole processes, as a user starts them: plastica's start-up, a run with a VTU per step, a
-// curves-only run, and a sweep's throughput. Wall time of the child from spawn to exit.
+// curves-only run, the render stage, and a sweep's throughput. Wall time of the child from spawn to exit.
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -78,6 +78,22 @@ BENCHMARK_CAPTURE(process_ring_run, elastic_vtu, "ring_elastic", false, Folder::
 BENCHMARK_CAPTURE(process_ring_run, inelastic_vtu, "ring_inelastic", false, Folder::empty)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(process_ring_run, elastic_vtu_again, "ring_elastic", false, Folder::rerun)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(process_ring_run, inelastic_vtu_again, "ring_inelastic", false, Folder::rerun)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The render stage as a user starts it: `plastica render` of the inelastic ring's 201 steps at
+// 1280 × 720 (frames, chart, contact sheet; the GIF when asked), with one drawing process or one
+// per core. frames_per_second: frames over the whole process's wall time.
+void process_render(benchmark::State& state) {
+    const std::string series = (fs::temp_directory_path() / "plastica_bench_render_series").string();
+    const std::string pictures = (fs::temp_directory_path() / "plastica_bench_render_pictures").string();
+    if (!fs::exists(fs::path(series) / "ring_inelastic.pvd"))
+        expect_success(state, plastica({"run", scene("ring_inelastic"), "-o", series, "-q", "--no-render"}));
+    std::vector<std::string> args{"render", series, "-o", pictures, "-q", "-j", std::to_string(state.range(0))};
+    if (state.range(1) == 0) args.push_back("--no-animation");
+    for (auto _ : state) expect_success(state, plastica(args));
+    state.counters["frames_per_second"] = benchmark::Counter(201.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(process_render)->ArgNames({"processes", "gif"})->Args({1, 0})->Args({2, 0})->Args({1, 1})->Args({2, 1})
+    ->Iterations(5)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK_CAPTURE(process_ring_run, elastic_curves_only, "ring_elastic", true, Folder::empty)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(process_ring_run, inelastic_curves_only, "ring_inelastic", true, Folder::empty)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -17,7 +17,8 @@ void add_render_options(po::options_description& options) {
         ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
         ("show", po::value<std::string>(), "draw layers left out by default: reactions (the supports' forces and moments)")
         ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
-        ("no-animation", "PNG frames only, no GIF");
+        ("no-animation", "PNG frames only, no GIF")
+        ("jobs,j", po::value<int>()->default_value(0), "drawing processes (0: one per core)");
 }
 
 std::optional<int> read_render_options(const po::variables_map& vm, render::RenderOptions& options) {
@@ -54,6 +55,11 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
     if (vm.count("overlay")) options.overlays = vm["overlay"].as<std::vector<std::string>>();
     if (vm.count("overlay-csv")) options.reference_points = vm["overlay-csv"].as<std::vector<std::string>>();
     options.animation = vm.count("no-animation") == 0;
+    options.workers = vm["jobs"].as<int>();
+    if (options.workers < 0) {
+        std::cerr << "plastica: --jobs takes a whole number ≥ 0 (0: one drawing process per core)\n";
+        return bad_input;
+    }
     auto split = [](const std::string& text) {
         std::vector<std::string> items;
         std::stringstream in(text);

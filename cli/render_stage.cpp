@@ -19,7 +19,8 @@ int render_and_report(const std::string& series, const render::RenderOptions& op
         progress.finish();
         if (!options.quiet) {
             std::cerr << "rendered " << r.frames << " frames in " << r.seconds << " s (" << r.frames_per_second
-                      << " frames per second, " << r.gl_renderer << ") into " << r.output << "/frames\n";
+                      << " frames per second, " << r.workers << (r.workers == 1 ? " process, " : " processes, ")
+                      << r.gl_renderer << ") into " << r.output << "/frames\n";
             std::cerr << r.output << "/chart.png, " << r.output << "/contact_sheet.png; " << r.animation << "\n";
         }
     } catch (const render::RenderError& e) {

@@ -3,7 +3,15 @@
 
 #include <GL/osmesa.h>
 
+#include <atomic>
+
 namespace plastica::render {
+
+namespace {
+std::atomic<bool> mesa_started{false};
+}
+
+bool mesa_started_in_this_process() { return mesa_started; }
 
 OffscreenContext::OffscreenContext(int width, int height)
     : width_(width), height_(height), buffer_(static_cast<std::size_t>(width) * height * 4) {
@@ -15,6 +23,7 @@ OffscreenContext::OffscreenContext(int width, int height)
                               OSMESA_CONTEXT_MAJOR_VERSION, 3,
                               OSMESA_CONTEXT_MINOR_VERSION, 2,
                               0};
+    mesa_started = true;
     context_ = OSMesaCreateContextAttribs(attributes, nullptr);
     if (!context_)
         throw RenderError("OSMesa could not create a core-profile 3.2 context (is libosmesa6 installed?)");

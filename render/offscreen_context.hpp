@@ -25,6 +25,11 @@ private:
     std::vector<unsigned char> buffer_;
 };
 
+// Whether this process has created an OSMesa context. Mesa then keeps threads of its own (the
+// shader cache's, the compiler's queue) that a forked child would lack: only a process that has
+// drawn nothing yet may fork drawing processes.
+bool mesa_started_in_this_process();
+
 // OSMesa's entry point for a GL function by name (nullptr when unknown).
 using GlFunction = void (*)();
 GlFunction osmesa_function(const char* name);

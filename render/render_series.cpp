@@ -5,10 +5,14 @@
 #include "contact_sheet.hpp"
 #include "charts.hpp"
 #include "frame_composer.hpp"
+#include "frame_workers.hpp"
+#include "layer_list.hpp"
+#include "offscreen_context.hpp"
 #include "png_file.hpp"
 #include "render_error.hpp"
 #include "result_series.hpp"
 #include "series_summary.hpp"
+
 
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
@@ -20,6 +24,7 @@
 #include <filesystem>
 #include <future>
 #include <iostream>
+#include <memory>
 
 namespace fs = std::filesystem;
 
@@ -84,48 +89,93 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     vtkSmartPointer<vtkPolyData> base;
     if (!series.base_file.empty()) base = read_base(series.base_file);
     auto first = magnified(read_step(series.steps.front().file), summary.magnify);
-    FrameComposer composer(summary, first, base, options.width, options.height, {options.hide, options.show});
-
+    const LayerChoice layers{options.hide, options.show};
     const auto steps = chosen_steps(summary, options);
-    // The sheet's tiles are drawn at their own size with text a quarter larger, so that a
-    // tile's legend stays readable (a shrunken full frame's text is 6 pixels high).
-    ContactSheet sheet(steps.size(), 3, 3, 1.0);
-    FrameComposer tiles(summary, first, base, options.width / 2, options.height / 2, {options.hide, options.show}, 1.25);
+    auto grid_of = [&](std::size_t index) {
+        return index == 0 ? first : magnified(read_step(series.steps[index].file), summary.magnify);
+    };
+    make_layers(summary, first, base, layers); // refuses a layer name that is not one (before anything is cleared)
     // Only now, with every option found good, do the earlier pictures go.
     clear_frames(frames);
+    // The animation's frames, shrunk, go into one file that every drawing process writes to.
+    const int shrink = animation_shrink(options.width);
+    std::unique_ptr<GifWriter> gif;
+    if (options.animation)
+        gif = std::make_unique<GifWriter>((out / (summary.scene + ".gif")).string(), options.width / shrink,
+                                          options.height / shrink);
+
+    auto draw_share = [&](int worker, int workers, const FrameDone& done) {
+        FrameComposer composer(summary, first, base, options.width, options.height, layers);
+        std::future<void> encoding;
+        for (std::size_t k = static_cast<std::size_t>(worker); k < steps.size(); k += static_cast<std::size_t>(workers)) {
+            const std::size_t index = steps[k];
+            vtkSmartPointer<vtkImageData> image = composer.draw(grid_of(index), index);
+            if (gif) write_animation_frame(gif->frame_file(), k, animation_pixels(image, shrink));
+            if (encoding.valid()) encoding.get(); // one frame in flight at a time: memory stays flat
+            const std::string path = (frames / frame_name(summary.curve[index].step)).string();
+            encoding = std::async(std::launch::async, [image, path] { write_png(image, path); });
+            done(k);
+        }
+        if (encoding.valid()) encoding.get();
+    };
+
+    // The parent's own pictures, drawn while the workers draw the frames.
+    std::vector<ResultSeries> others;
+    for (const std::string& other : options.overlays) others.push_back(open_series(other));
+    auto parent_pictures = [&] {
+        // The sheet's tiles are drawn at their own size with text a quarter larger, so that a
+        // tile's legend stays readable (a shrunken full frame's text is 6 pixels high).
+        ContactSheet sheet(steps.size(), 3, 3, 1.0);
+        FrameComposer tiles(summary, first, base, options.width / 2, options.height / 2, layers, 1.25);
+        for (std::size_t k = 0; k < steps.size(); ++k)
+            if (sheet.wants(k)) sheet.keep(k, tiles.draw(grid_of(steps[k]), steps[k]));
+        std::vector<const SeriesSummary*> runs{&summary};
+        for (const SeriesSummary& o : overlays) runs.push_back(&o);
+        write_png(draw_curve_chart(runs, options.width, options.height, references), (out / "chart.png").string());
+        if (!options.shapes.empty()) {
+            // This run's shapes, and each overlay's beside them at one scale.
+            std::vector<ShapesPanel> panels{{&summary, &series}};
+            for (std::size_t k = 0; k < others.size(); ++k) panels.push_back({&overlays[k], &others[k]});
+            write_png(draw_shapes(panels, options.shapes, options.width, options.height), (out / "shapes.png").string());
+        }
+        if (auto image = sheet.compose()) write_png(image, (out / "contact_sheet.png").string());
+        return tiles.gl_renderer();
+    };
+
     const auto t0 = std::chrono::steady_clock::now();
-    std::future<void> encoding;
-    for (std::size_t k = 0; k < steps.size(); ++k) {
-        const std::size_t index = steps[k];
-        auto grid = index == 0 ? first : magnified(read_step(series.steps[index].file), summary.magnify);
-        vtkSmartPointer<vtkImageData> image = composer.draw(grid, index);
-        if (sheet.wants(k)) sheet.keep(k, tiles.draw(grid, index));
-        if (encoding.valid()) encoding.get(); // one frame in flight at a time: memory stays flat
-        const std::string path = (frames / frame_name(summary.curve[index].step)).string();
-        encoding = std::async(std::launch::async, [image, path] { write_png(image, path); });
-        if (options.on_frame) options.on_frame(static_cast<int>(k + 1), static_cast<int>(steps.size()));
+    std::future<std::string> pictures;
+    std::vector<bool> finished(steps.size(), false);
+    std::size_t next_to_animate = 0, frames_done = 0;
+    auto animate_in_order = [&](std::size_t k) {
+        finished.at(k) = true;
+        for (; gif && next_to_animate < steps.size() && finished[next_to_animate]; ++next_to_animate)
+            gif->add(next_to_animate);
+        if (options.on_frame) options.on_frame(static_cast<int>(++frames_done), static_cast<int>(steps.size()));
+    };
+    int workers = std::min<int>(options.workers > 0 ? options.workers : default_worker_count(), static_cast<int>(steps.size()));
+    if (workers > 1 && !mesa_started_in_this_process()) {
+        draw_in_workers(
+            workers, draw_share,
+            [&] {
+                pictures = std::async(std::launch::async, parent_pictures);
+                if (gif) gif->start();
+            },
+            animate_in_order);
+    } else {
+        // One process draws everything, one picture after another (VTK's rendering stays on
+        // one thread).
+        workers = 1;
+        if (gif) gif->start();
+        draw_share(0, 1, animate_in_order);
+        pictures = std::async(std::launch::deferred, parent_pictures);
     }
-    if (encoding.valid()) encoding.get();
+    report.gl_renderer = pictures.get();
     report.frames = static_cast<int>(steps.size());
+    report.workers = workers;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     report.frames_per_second = report.frames / std::max(report.seconds, 1e-9);
-    report.gl_renderer = composer.gl_renderer();
-
-    std::vector<const SeriesSummary*> runs{&summary};
-    for (const SeriesSummary& o : overlays) runs.push_back(&o);
-    write_png(draw_curve_chart(runs, options.width, options.height, references), (out / "chart.png").string());
-    if (!options.shapes.empty()) {
-        // This run's shapes, and each overlay's beside them at one scale.
-        std::vector<ResultSeries> others;
-        for (const std::string& other : options.overlays) others.push_back(open_series(other));
-        std::vector<ShapesPanel> panels{{&summary, &series}};
-        for (std::size_t k = 0; k < others.size(); ++k) panels.push_back({&overlays[k], &others[k]});
-        write_png(draw_shapes(panels, options.shapes, options.width, options.height), (out / "shapes.png").string());
-    }
-    if (auto image = sheet.compose()) write_png(image, (out / "contact_sheet.png").string());
-    if (options.animation) {
-        const AnimationResult gif = write_gif(frames.string(), (out / (summary.scene + ".gif")).string());
-        report.animation = gif.message;
+    if (gif) {
+        report.animation = gif->finish(steps.size()).message;
     } else {
         report.animation = "no animation requested";
     }

@@ -1,7 +1,9 @@
 // The render stage as one call: read a result series (the VTU/PVD files are the only
-// input), draw every k-th step into frames/frame_NNNNNN.png (NNNNNN is the step number), then
-// chart.png, contact_sheet.png and <scene>.gif. Steps are read and drawn one at a time; the PNG of
-// one frame is encoded on a second thread while the next one draws.
+// input), draw every k-th step into frames/frame_NNNNNN.png (NNNNNN is the step number), and
+// chart.png, contact_sheet.png and <scene>.gif. The frames are drawn by one process per core
+// (frame_workers.hpp), each encoding its PNGs on a second thread while it draws the next frame;
+// the parent meanwhile draws the chart and the contact sheet and streams the frames, in order,
+// to the animation.
 #pragma once
 
 #include <functional>
@@ -23,6 +25,7 @@ struct RenderOptions {
     std::vector<double> shapes;           // control displacements for shapes.png (empty: none)
     double magnify = 1.0;                 // displacements drawn × this; 0: chosen (see summarise)
     bool animation = true;
+    int workers = 0;                      // drawing processes; 0: one per core
     bool quiet = false;
     // Called after each frame with the frames done and the total (progress display); may be empty.
     std::function<void(int done, int total)> on_frame;
@@ -32,6 +35,7 @@ struct RenderReport {
     int frames = 0;
     double seconds = 0.0;       // drawing and encoding the frames
     double frames_per_second = 0.0;
+    int workers = 1;            // drawing processes used
     std::string gl_renderer;
     std::string animation;      // the GIF's path, or why there is none
     std::string output;         // the folder written

@@ -350,6 +350,39 @@ TEST_CASE("The same frame drawn twice is the same PNG, byte for byte", "[render]
         CHECK(bytes(series / "a" / name) == bytes(series / "b" / name));
 }
 
+TEST_CASE("Frames drawn by several processes are the bytes one process draws", "[render]") {
+    unsetenv("DISPLAY");
+    const fs::path series = solved_series("ring_inelastic", 10, "workers");
+    RenderOptions serial = small(series / "serial"), parallel = small(series / "parallel");
+    serial.workers = 1;
+    parallel.workers = 3;
+    serial.animation = parallel.animation = std::system("command -v ffmpeg > /dev/null") == 0;
+    // Processes are forked only before this process has drawn anything: the parallel render first.
+    const RenderReport report = render_series(series.string(), parallel);
+    CHECK(report.workers == 3);
+    CHECK(render_series(series.string(), serial).workers == 1);
+    auto bytes = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    int frames = 0;
+    for (const auto& entry : fs::directory_iterator(series / "serial" / "frames")) {
+        ++frames;
+        CHECK(bytes(entry.path()) == bytes(series / "parallel" / "frames" / entry.path().filename()));
+    }
+    CHECK(frames == report.frames);
+    CHECK(frames == 21);
+    CHECK(bytes(series / "serial" / "contact_sheet.png") == bytes(series / "parallel" / "contact_sheet.png"));
+    if (serial.animation) {
+        const std::string gif = bytes(series / "parallel" / "ring_inelastic.gif");
+        CHECK(gif.rfind("GIF89a", 0) == 0);
+        CHECK(gif == bytes(series / "serial" / "ring_inelastic.gif"));
+        // The frame file and the palette, kept only while the animation is made, are gone.
+        for (const auto& entry : fs::directory_iterator(series / "parallel"))
+            CHECK(entry.path().extension() != ".rgb");
+    }
+}
+
 TEST_CASE("A bad series is refused with the file and the reason", "[render]") {
     unsetenv("DISPLAY");
     const fs::path series = solved_series("ring_elastic", 100, "bad");
