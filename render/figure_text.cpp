@@ -4,6 +4,7 @@
 #include <vtkTextActor.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace plastica::render {
@@ -26,6 +27,42 @@ std::vector<double> curve_column(const std::vector<CurvePoint>& curve, std::size
     std::vector<double> v;
     for (std::size_t i = 0; i < count && i < curve.size(); ++i) v.push_back(load ? curve[i].load : curve[i].displacement);
     return v;
+}
+
+namespace {
+
+std::string with_digits(double value, int digits) {
+    char text[64];
+    const double size = std::abs(value);
+    if (value == 0.0) return "0";
+    if (size >= 1e-3 && size < 1e7) {
+        const int decimals = std::max(0, digits - 1 - static_cast<int>(std::floor(std::log10(size))));
+        std::snprintf(text, sizeof text, "%.*f", decimals, value);
+        std::string t = text;
+        if (t.find('.') != std::string::npos) {
+            t.erase(t.find_last_not_of('0') + 1);
+            if (t.back() == '.') t.pop_back();
+        }
+        return t;
+    }
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    return text;
+}
+
+} // namespace
+
+std::vector<std::string> distinct_numbers(const std::vector<double>& values) {
+    std::vector<std::string> labels;
+    for (int digits = 3; digits <= 17; ++digits) {
+        labels.clear();
+        for (double v : values) labels.push_back(with_digits(v, digits));
+        bool apart = true;
+        for (std::size_t i = 0; i < values.size() && apart; ++i)
+            for (std::size_t j = i + 1; j < values.size() && apart; ++j)
+                apart = values[i] == values[j] || labels[i] != labels[j];
+        if (apart) break;
+    }
+    return labels;
 }
 
 std::string number(double value) {

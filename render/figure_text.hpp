@@ -28,5 +28,9 @@ std::string load_axis_title(const SeriesSummary& s);
 std::vector<double> curve_column(const std::vector<CurvePoint>& curve, std::size_t count, bool load);
 // "%.4g" without trailing noise.
 std::string number(double value);
+// Labels for values that must stay apart: the fewest significant digits (at least 3) with which
+// every two different values read differently, written out in full between 0.001 and 10⁷
+// (235000, not 2.35e+05).
+std::vector<std::string> distinct_numbers(const std::vector<double>& values);
 
 } // namespace plastica::render

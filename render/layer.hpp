@@ -17,7 +17,7 @@ namespace plastica::render {
 
 // One line of the legend: a mark and its text.
 struct LegendEntry {
-    enum class Mark { bar, disc, outlined_disc, cross, arrow, triangle };
+    enum class Mark { bar, disc, outlined_disc, cross, arrow, triangle, clamp, roller, square };
     Mark mark = Mark::bar;
     Rgb colour{0, 0, 0};
     double size = 0.0; // radius of a disc, in pixels at 1280 × 720
@@ -33,6 +33,7 @@ struct ViewGeometry {
     double size = 1.0;              // the larger side of the motion's bounds
     bool mirrored = false;          // a half model drawn with its mirror image
     double mirror_x = 0.0;
+    double text_scale = 1.0;        // text size over its size in a 1280 × 720 frame
     double pixels(double n) const { return n * world_per_pixel; }
 };
 

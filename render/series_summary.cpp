@@ -18,6 +18,15 @@ namespace plastica::render {
 
 namespace {
 
+bool signed_quantity(const std::string& array) {
+    using result::Quantity;
+    for (const result::Array& a : result::arrays())
+        if (a.name == array)
+            return a.quantity == Quantity::force || a.quantity == Quantity::moment || a.quantity == Quantity::length ||
+                   a.quantity == Quantity::rotation || a.quantity == Quantity::curvature;
+    return false;
+}
+
 std::string array_names(vtkUnstructuredGrid* grid) {
     std::string names;
     for (vtkDataSetAttributes* data : {static_cast<vtkDataSetAttributes*>(grid->GetPointData()),
@@ -116,6 +125,8 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
     const double inf = std::numeric_limits<double>::infinity();
     double b[4] = {inf, -inf, inf, -inf};
     double range[2] = {inf, -inf};
+    std::vector<double> load_direction; // each node's first load direction (x, y)
+    bool loads_turn = false;             // some node's load changes direction (a follower pressure)
     for (std::size_t k = 0; k < series.steps.size(); ++k) {
         const std::string& file = series.steps[k].file;
         auto grid = magnified(read_step(file), s.magnify);
@@ -147,6 +158,7 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             if (!a)
                 throw RenderError(file + ": no array '" + field + "' to colour by; the series has: " + array_names(grid));
             s.field.components = a->GetNumberOfComponents();
+            s.field.is_signed = s.field.components == 1 && signed_quantity(field);
         }
         vtkDataArray* initial = grid->GetPointData()->GetArray(result::name::initial_position);
         for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
@@ -175,7 +187,6 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         c.load = field_value(grid, result::name::load);
         if (grid->GetFieldData()->GetArray(result::name::contact_count)) c.contact_count = static_cast<int>(field_value(grid, result::name::contact_count));
         if (grid->GetFieldData()->GetArray(result::name::hinge_count)) c.hinge_count = static_cast<int>(field_value(grid, result::name::hinge_count));
-        s.curve.push_back(c);
         if (vtkDataArray* force = grid->GetPointData()->GetArray(result::name::contact_force)) {
             vtkDataArray* state = grid->GetPointData()->GetArray(result::name::contact);
             for (vtkIdType i = 0; i < force->GetNumberOfTuples(); ++i)
@@ -185,6 +196,7 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                     s.any_contact = s.any_contact || f > 0.0;
                 }
         }
+        s.curve.push_back(c);
         const struct {
             const char* force;
             const char* moment;
@@ -195,6 +207,8 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             vtkDataArray* a = grid->GetPointData()->GetArray(force);
             vtkDataArray* m = grid->GetPointData()->GetArray(moment);
             if (!a || !m) continue;
+            const bool loads = stats == &s.loads;
+            if (loads) load_direction.resize(static_cast<std::size_t>(a->GetNumberOfTuples()) * 2, 0.0);
             for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
                 const double whole = on_mirror_line(s, initial->GetTuple3(i)) ? 2.0 : 1.0;
                 const double fx = whole * a->GetComponent(i, 0), fy = whole * a->GetComponent(i, 1);
@@ -202,11 +216,17 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                 stats->max_force = std::max(stats->max_force, f);
                 stats->max_moment = std::max(stats->max_moment, whole * std::abs(m->GetComponent(i, 0)));
                 if (f <= 0.0) continue;
-                // An arrow points at its node, so its tail lies on the side the force comes from.
-                if (fx > 0.3 * f) stats->sides |= 1;
-                if (fx < -0.3 * f) stats->sides |= 2;
-                if (fy > 0.3 * f) stats->sides |= 4;
-                if (fy < -0.3 * f) stats->sides |= 8;
+                // An arrow points at its node, so its tail lies on the side the force comes from;
+                // drawn by components, each component's arrow counts.
+                const double share = loads ? 1e-6 : 0.3;
+                if (fx > share * f) stats->sides |= 1;
+                if (fx < -share * f) stats->sides |= 2;
+                if (fy > share * f) stats->sides |= 4;
+                if (fy < -share * f) stats->sides |= 8;
+                if (!loads) continue;
+                double* first = &load_direction[static_cast<std::size_t>(i) * 2];
+                if (first[0] == 0.0 && first[1] == 0.0) first[0] = fx / f, first[1] = fy / f;
+                else if (std::abs(first[0] * fy - first[1] * fx) > 1e-6 * f) loads_turn = true;
             }
         }
         for (const char* end : {result::name::hinge_state_i, result::name::hinge_state_j}) {
@@ -234,6 +254,9 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             s.largest_load = largest;
         }
     }
+    s.loads.by_components = !loads_turn;
+    s.load_arrow_reference = s.loads.max_force;
+    if (s.load_axis_cut[1] > 0.0) s.load_arrow_reference *= std::min(1.0, s.load_axis_cut[1] / s.largest_load);
     if (s.mirrored) {
         const double lo = std::min(b[0], 2 * s.mirror_x - b[1]), hi = std::max(b[1], 2 * s.mirror_x - b[0]);
         b[0] = lo;

@@ -29,6 +29,10 @@ struct ColourField {
     std::string name;
     bool on_cells = false; // a cell array (per element) rather than a point array
     int components = 1;    // vectors are coloured by their magnitude
+    // A signed quantity (a force, moment, length, rotation or curvature, one component): coloured
+    // on a scale diverging about zero, so that a sign is a colour in every frame and every run.
+    // Otherwise (shares, ratios, magnitudes) a sequential scale from zero.
+    bool is_signed = false;
 };
 
 struct SeriesSummary {
@@ -49,6 +53,10 @@ struct SeriesSummary {
     struct NodalArrows {
         double max_force = 0.0, max_moment = 0.0;
         int sides = 0; // bits: 1 left, 2 right, 4 below, 8 above
+        // Every node's force keeps its direction through the run (loads given as fx and fy, line
+        // loads): drawn as its components, as the user gave them. A pressure that follows the
+        // structure turns: drawn as one arrow along the force.
+        bool by_components = false;
     };
     NodalArrows loads, reactions;
     double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
@@ -58,6 +66,10 @@ struct SeriesSummary {
     // response stays in view.
     double load_axis_cut[2] = {0.0, 0.0};
     double largest_load = 0.0;    // the largest |load| of the run, said where the axis is cut
+    // The force drawn at full length by the arrows of applied loads: the largest in the run, or,
+    // where the load axis is cut, the largest while the load is in view (a base's penalty taking
+    // over the load would otherwise shrink the arrow to a stub for the structure's own response).
+    double load_arrow_reference = 0.0;
     // Units the scene names (empty: none): of lengths and forces, and of the reported load and
     // displacement.
     std::string length_unit, force_unit, load_unit, displacement_unit;

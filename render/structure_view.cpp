@@ -55,20 +55,29 @@ StructureView::StructureView(const SeriesSummary& summary, std::vector<std::uniq
     : summary_(summary), layers_(std::move(layers)), viewport_(viewport) {
     renderer_->SetViewport(viewport.x0, viewport.y0, viewport.x1, viewport.y1);
     renderer_->SetBackground(colour::background.red(), colour::background.green(), colour::background.blue());
-    const ViewGeometry view = fix_camera();
+    ViewGeometry view = fix_camera();
+    view.text_scale = text_scale;
 
-    // The field's colours: cool–warm, centred on zero when the values change sign.
+    // The field's colours: a signed field on the cool–warm scale with zero at its neutral middle
+    // (compression blue, tension red, whatever the run's range); any other from that neutral
+    // grey at zero to the warm end.
     double lo = summary.field_range[0], hi = summary.field_range[1];
-    if (lo < 0 && hi > 0) hi = std::max(-lo, hi), lo = -hi;
-    if (hi - lo <= 1e-300 * (1 + std::abs(hi))) lo -= 1, hi += 1;
+    if (summary.field.is_signed) {
+        hi = std::max(std::abs(lo), std::abs(hi));
+        lo = -hi;
+    } else {
+        lo = std::min(lo, 0.0);
+    }
+    if (hi - lo <= 1e-300 * (1 + std::abs(hi))) hi = lo + 1;
     vtkNew<vtkColorTransferFunction> map;
     map->SetColorSpaceToDiverging();
     map->AddRGBPoint(0.0, 0.230, 0.299, 0.754);
     map->AddRGBPoint(1.0, 0.706, 0.016, 0.150);
+    const double from = summary.field.is_signed || lo < 0 ? 0.0 : 0.5;
     colours_->SetNumberOfTableValues(256);
     for (int i = 0; i < 256; ++i) {
         double rgb[3];
-        map->GetColor(i / 255.0, rgb);
+        map->GetColor(from + (1.0 - from) * i / 255.0, rgb);
         colours_->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
     }
     colours_->SetRange(lo, hi);
@@ -249,6 +258,27 @@ double StructureView::lay_out_legend(double s) {
             case LegendEntry::Mark::bar: {
                 const double a[2] = {cx - 9 * s, cy}, b[2] = {cx + 9 * s, cy};
                 legend_marks_.bar(a, b, 5 * s, e.colour);
+                break;
+            }
+            case LegendEntry::Mark::clamp: { // a wall, hatched below, as the view draws a clamp
+                const double a[2] = {cx - 10 * s, cy + 4 * s}, b[2] = {cx + 10 * s, cy + 4 * s};
+                legend_marks_.bar(a, b, 4 * s, e.colour);
+                for (int k = 0; k < 4; ++k) {
+                    const double q[2] = {cx - 8 * s + k * 5.5 * s, cy + 2 * s}, r[2] = {q[0] - 5 * s, q[1] - 6 * s};
+                    legend_marks_.bar(q, r, 1.5 * s, colour::hatching);
+                }
+                break;
+            }
+            case LegendEntry::Mark::roller: {
+                const double xy[6] = {cx, cy + 9 * s, cx - 7 * s, cy - 3 * s, cx + 7 * s, cy - 3 * s};
+                legend_marks_.polygon(xy, 3, e.colour);
+                for (double side : {-3.5, 3.5}) legend_marks_.disc(cx + side * s, cy - 6 * s, 2.8 * s, e.colour);
+                break;
+            }
+            case LegendEntry::Mark::square: {
+                const double h = 6 * s;
+                const double xy[8] = {cx - h, cy - h, cx + h, cy - h, cx + h, cy + h, cx - h, cy + h};
+                legend_marks_.polygon(xy, 4, e.colour);
                 break;
             }
             }

@@ -18,12 +18,15 @@ ChartFigure study_chart(const std::string& scene, const StudyReport& report) {
         const std::string name = (order.method.empty() ? "" : order.method + ", ") + order.parameter + " ";
         ChartSeries line{name, {}, {}, colours[k % 6], 2.5f};
         ChartSeries dots{"", {}, {}, colours[k % 6], 9.0f, true};
+        std::vector<double> levels;
         for (const StudyLevel& l : report.levels)
             if (l.parameter == order.parameter && l.method == order.method && !l.is_reference && l.error.max > 0) {
                 line.x.push_back(l.seconds);
                 line.y.push_back(l.error.max);
-                line.label += (line.x.size() == 1 ? "" : ", ") + number(l.level);
+                levels.push_back(l.level);
             }
+        const std::vector<std::string> labels = distinct_numbers(levels);
+        for (std::size_t i = 0; i < labels.size(); ++i) line.label += (i == 0 ? "" : ", ") + labels[i];
         if (std::isfinite(order.order)) line.label += "  (order " + number(order.order) + ")";
         dots.x = line.x;
         dots.y = line.y;

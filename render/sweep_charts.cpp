@@ -31,28 +31,32 @@ std::vector<std::string> draw_sweep_charts(const SweepCharts& c, const std::stri
         write_png(draw_chart(figure), path);
         written.push_back(path);
     };
-    // The family of curves, coloured by the first parameter; the legend names its two ends.
+    // The family of curves, coloured by the first parameter. The legend names each value once
+    // (on the first run that has it) when there are few, else the two ends; the labels have the
+    // digits that keep them apart.
     double lo = INFINITY, hi = -INFINITY;
+    std::vector<double> distinct;
     for (const SweepChartRun& r : c.runs)
-        if (std::isfinite(r.values.front())) lo = std::min(lo, r.values.front()), hi = std::max(hi, r.values.front());
+        if (std::isfinite(r.values.front())) {
+            lo = std::min(lo, r.values.front()), hi = std::max(hi, r.values.front());
+            if (std::find(distinct.begin(), distinct.end(), r.values.front()) == distinct.end()) distinct.push_back(r.values.front());
+        }
+    std::sort(distinct.begin(), distinct.end());
+    if (distinct.size() > 8) distinct = {distinct.front(), distinct.back()};
+    const std::vector<std::string> labels = distinct_numbers(distinct);
     ChartFigure family{c.scene + ": " + std::to_string(c.runs.size()) + " runs, coloured by " + c.keys.front(),
                        c.displacement_label, c.load_label, {}, true};
+    std::vector<bool> named(distinct.size(), false);
     for (const SweepChartRun& r : c.runs) {
         const double t = hi > lo && std::isfinite(r.values.front()) ? (r.values.front() - lo) / (hi - lo) : 0.5;
         ChartSeries line{"", r.displacement, r.load, ramp(t), 1.5f};
-        if (r.values.front() == lo && family.series.size() < 2) line.label = c.keys.front() + " = " + number(lo);
+        const auto at = std::find(distinct.begin(), distinct.end(), r.values.front());
+        if (at != distinct.end() && !named[static_cast<std::size_t>(at - distinct.begin())]) {
+            named[static_cast<std::size_t>(at - distinct.begin())] = true;
+            line.label = c.keys.front() + " = " + labels[static_cast<std::size_t>(at - distinct.begin())];
+        }
         family.series.push_back(line);
     }
-    // Label the highest value once, on a run that has it.
-    for (auto& s : family.series)
-        if (s.label.empty() && hi > lo) {
-            for (const SweepChartRun& r : c.runs)
-                if (r.values.front() == hi && r.displacement == s.x) {
-                    s.label = c.keys.front() + " = " + number(hi);
-                    break;
-                }
-            if (!s.label.empty()) break;
-        }
     save(family, "curves.png");
     // The peak load against each parameter.
     for (std::size_t k = 0; k < c.keys.size(); ++k) {

@@ -3,6 +3,7 @@
 #include "render_helpers.hpp"
 
 #include "charts.hpp"
+#include "figure_text.hpp"
 #include "legend_corner.hpp"
 #include "palette.hpp"
 #include "png_file.hpp"
@@ -381,6 +382,84 @@ TEST_CASE("Frames drawn by several processes are the bytes one process draws", "
         for (const auto& entry : fs::directory_iterator(series / "parallel"))
             CHECK(entry.path().extension() != ".rgb");
     }
+}
+
+TEST_CASE("Every load shows, by its components, and the legend names only the supports there are", "[render][legend]") {
+    unsetenv("DISPLAY");
+    // The gallery's portal: 35 kN sideways beside 2 800 kN down at the left column's head. The
+    // sway load is drawn as its own arrow, pointing right, left of the frame at the beam's height,
+    // not folded into a near-vertical resultant.
+    const fs::path portal = solved_series("gallery/portal_frame", 1000, "components");
+    RenderOptions o = small(portal / "pictures");
+    o.width = 1280;
+    o.height = 720;
+    render_series(portal.string(), o);
+    auto frame = read_png(last_frame(portal / "pictures").string());
+    const auto load = [](Pixel p) { return is(p, colour::load); };
+    CHECK(count_pixels(frame, load, 0.0, 0.085, 0.19, 0.26) > 40);
+    // Clamps only: the legend's support mark is a wall (a few rows high), not a pin's triangle.
+    const auto support = [](Pixel p) { return is(p, colour::support); };
+    int rows = 0;
+    for (int y = 100; y < 720; ++y)
+        rows += count_pixels(frame, support, 0.445, 0.47, y / 720.0, (y + 1) / 720.0) > 0;
+    CHECK(rows > 0);
+    CHECK(rows <= 6);
+}
+
+TEST_CASE("A signed field is coloured about zero: a column in compression is blue", "[render][legend]") {
+    unsetenv("DISPLAY");
+    // Axial force alone, all of it compression: on a scale diverging about the middle of its
+    // range half the column would be red, as if in tension.
+    const fs::path column = solved_series_of(read_scene_text(R"(
+[scene]
+name = "column_in_compression"
+[[material]]
+name = "steel"
+E = 2.1e8
+fy = 3.55e5
+[[section]]
+name = "box"
+material = "steel"
+shape = "rectangle"
+b = 0.2
+h = 0.2
+[[line]]
+name = "column"
+start = [0.0, 0.0]
+end = [0.0, 4.0]
+elements = 8
+section = "box"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[load]]
+at = [0.0, 4.0]
+fy = -100.0
+[[distributed_load]]
+on = "column"
+wy = -50.0
+[analysis]
+scheme = "load_control"
+increment = 0.25
+target_load_factor = 1.0
+)", "column.toml"), 1, "compression");
+    RenderOptions o = small(column / "pictures");
+    o.field = "axial_force";
+    o.hide = {"loads"}; // red arrows of their own
+    render_series(column.string(), o);
+    auto frame = read_png(last_frame(column / "pictures").string());
+    const auto warm = [](Pixel p) { return p.r > p.b + 40; };
+    const auto cool = [](Pixel p) { return p.b > p.r + 40 && p.g < 200; };
+    CHECK(count_pixels(frame, cool, 0, structure_right, band_bottom, 1) > 100);
+    CHECK(count_pixels(frame, warm, 0, structure_right, band_bottom, 1) == 0);
+}
+
+TEST_CASE("Labels of values keep every value apart", "[render][legend]") {
+    CHECK(distinct_numbers({235e3, 275e3, 355e3}) == std::vector<std::string>{"235000", "275000", "355000"});
+    CHECK(distinct_numbers({2.35e5, 2.351e5}) == std::vector<std::string>{"235000", "235100"});
+    CHECK(distinct_numbers({1.0, 1.0001, 1.0}) == std::vector<std::string>{"1", "1.0001", "1"});
+    CHECK(distinct_numbers({0.5, 0.25, 0.125}) == std::vector<std::string>{"0.5", "0.25", "0.125"});
+    CHECK(distinct_numbers({2e-7, 3e-7}) == std::vector<std::string>{"2e-07", "3e-07"});
 }
 
 TEST_CASE("A bad series is refused with the file and the reason", "[render]") {

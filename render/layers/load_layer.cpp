@@ -1,3 +1,5 @@
+#include "arrow_scale.hpp"
+#include "figure_text.hpp"
 #include "flat_marks.hpp"
 #include "result_schema.hpp"
 #include "layers/layers.hpp"
@@ -32,13 +34,16 @@ struct ArrowKind {
 
 class LoadLayer final : public Layer {
 public:
-    LoadLayer(const SeriesSummary& summary, const SeriesSummary::NodalArrows& stats, ArrowKind kind)
-        : summary_(summary), stats_(stats), kind_(kind) {}
+    LoadLayer(const SeriesSummary& summary, const SeriesSummary::NodalArrows& stats, double reference, ArrowKind kind)
+        : summary_(summary), stats_(stats), kind_(kind) {
+        scale_.reference = reference;
+    }
 
     void reserve(double box[4], double size) override {
         // The longest arrow is 12 % of the structure's size; its tail lies beyond the node on
         // the side the force comes from.
         length_ = 0.12 * size;
+        scale_.full_length = length_;
         const int sides = stats_.sides;
         if (sides & 1) box[0] -= length_;
         if (sides & 2) box[1] += length_;
@@ -49,10 +54,12 @@ public:
     void attach(const ViewGeometry& view, const AddProp& add) override {
         view_ = view;
         add(arrows_.prop(), true);
+        labels_.attach(view, add, kind_.colour);
     }
 
     void show(vtkUnstructuredGrid* step) override {
         arrows_.clear();
+        labels_.clear();
         vtkDataArray* load = step->GetPointData()->GetArray(kind_.force_array);
         vtkDataArray* moment = step->GetPointData()->GetArray(kind_.moment_array);
         vtkDataArray* initial = step->GetPointData()->GetArray(result::name::initial_position);
@@ -66,11 +73,12 @@ public:
                          m = whole * moment->GetComponent(i, 0);
             const double f = std::hypot(fx, fy);
             if (stats_.max_force > 0 && f > 1e-9 * stats_.max_force) {
-                // The tip touches the ribbon's edge; short arrows keep a visible length.
-                const double length = std::max(length_ * f / stats_.max_force, view_.pixels(8));
-                const double tip[2] = {p[0] - 0.5 * view_.ribbon_width * fx / f, p[1] - 0.5 * view_.ribbon_width * fy / f};
-                const double tail[2] = {tip[0] - length * fx / f, tip[1] - length * fy / f};
-                arrows_.arrow(tail, tip, view_.pixels(3), kind_.colour);
+                if (stats_.by_components) {
+                    if (std::abs(fx) > 1e-9 * stats_.max_force) force_arrow(p, fx, 0.0);
+                    if (std::abs(fy) > 1e-9 * stats_.max_force) force_arrow(p, 0.0, fy);
+                } else {
+                    force_arrow(p, fx, fy);
+                }
             }
             if (stats_.max_moment > 0 && std::abs(m) > 1e-9 * stats_.max_moment) moment_arrow(p, m > 0);
         }
@@ -82,15 +90,30 @@ public:
 
     std::string note() const override {
         std::string text;
-        const auto unit = [](const std::string& u) { return u.empty() ? std::string() : " " + u; };
-        if (stats_.max_force > 0) text = "longest: " + short_number(stats_.max_force) + unit(summary_.force_unit);
+        if (stats_.max_force > 0) text = "longest: " + short_number(scale_.reference) + unit(summary_.force_unit);
         if (stats_.max_moment > 0)
             text += (text.empty() ? "" : "\n") + std::string("moment ") + short_number(stats_.max_moment) +
                     unit(array_unit(summary_, result::name::moment_i));
-        return text + "\n(largest in the run)";
+        // How arrows off the scale are drawn (ArrowScale), said once under the entry.
+        const bool spikes = scale_.reference < stats_.max_force;
+        if (stats_.max_force <= 0) return text + "\n(largest in the run)";
+        return text + (spikes ? "\n(largest while the load is in view;\nlonger ones end there, valued)"
+                              : "\n(largest in the run;\nunder 30 % drawn at 30 %, valued)");
     }
 
 private:
+    static std::string unit(const std::string& u) { return u.empty() ? std::string() : " " + u; }
+
+    // The tip touches the ribbon's edge; an arrow off the scale says its value.
+    void force_arrow(const double p[3], double fx, double fy) {
+        const double f = std::hypot(fx, fy);
+        const double length = std::max(scale_.length(f), view_.pixels(8));
+        const double tip[2] = {p[0] - 0.5 * view_.ribbon_width * fx / f, p[1] - 0.5 * view_.ribbon_width * fy / f};
+        const double tail[2] = {tip[0] - length * fx / f, tip[1] - length * fy / f};
+        arrows_.arrow(tail, tip, view_.pixels(3), kind_.colour);
+        if (!scale_.to_scale(f)) labels_.add(tail, fx, fy, number(f) + unit(summary_.force_unit));
+    }
+
     // A three-quarter circle round the node, its head showing the sense of the moment.
     void moment_arrow(const double p[3], bool counter_clockwise) {
         const double r = view_.pixels(16), sense = counter_clockwise ? 1.0 : -1.0;
@@ -115,18 +138,20 @@ private:
     const SeriesSummary::NodalArrows& stats_;
     ArrowKind kind_;
     double length_ = 0.0;
+    ArrowScale scale_;
     ViewGeometry view_;
     FlatMarks arrows_{3.5};
+    ArrowLabels labels_;
 };
 
 } // namespace
 
 std::unique_ptr<Layer> load_layer(const SeriesSummary& summary) {
-    return std::make_unique<LoadLayer>(summary, summary.loads, ArrowKind{result::name::applied_load, result::name::applied_moment, colour::load, "applied load", "applied moment"});
+    return std::make_unique<LoadLayer>(summary, summary.loads, summary.load_arrow_reference, ArrowKind{result::name::applied_load, result::name::applied_moment, colour::load, "applied load", "applied moment"});
 }
 
 std::unique_ptr<Layer> reaction_layer(const SeriesSummary& summary) {
-    return std::make_unique<LoadLayer>(summary, summary.reactions, ArrowKind{result::name::reaction, result::name::reaction_moment, colour::reaction, "support reaction", "support moment"});
+    return std::make_unique<LoadLayer>(summary, summary.reactions, summary.reactions.max_force, ArrowKind{result::name::reaction, result::name::reaction_moment, colour::reaction, "support reaction", "support moment"});
 }
 
 } // namespace plastica::render

@@ -79,8 +79,25 @@ public:
         }
     }
 
+    // One entry per kind of support the scene has, in a fixed order.
     std::vector<LegendEntry> legend() const override {
-        return {{LegendEntry::Mark::triangle, colour::support, 0.0, "support"}};
+        bool clamp = false, pin = false, roller = false, guide = false, rotation = false;
+        for (const SupportedNode& s : supported_) {
+            const bool ux = s.fixed & fixes_ux, uy = s.fixed & fixes_uy, rz = s.fixed & fixes_rz;
+            if (ux && uy && rz) clamp = true;
+            else if (!ux && !uy) rotation = true;
+            else if (rz) guide = true;
+            else if (ux && uy) pin = true;
+            else roller = true;
+        }
+        std::vector<LegendEntry> entries;
+        using Mark = LegendEntry::Mark;
+        if (clamp) entries.push_back({Mark::clamp, colour::support, 0.0, "clamped support"});
+        if (pin) entries.push_back({Mark::triangle, colour::support, 0.0, "pinned support"});
+        if (roller) entries.push_back({Mark::roller, colour::support, 0.0, "roller"});
+        if (guide) entries.push_back({Mark::square, colour::support, 0.0, "guided support (slides, cannot turn)"});
+        if (rotation) entries.push_back({Mark::square, colour::support, 0.0, "rotation held"});
+        return entries;
     }
 
 private:

@@ -1,0 +1,55 @@
+#include "arrow_scale.hpp"
+#include "text_and_mirror.hpp"
+
+#include <vtkCoordinate.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace plastica::render {
+
+double ArrowScale::length(double force) const {
+    if (reference <= 0) return 0.0;
+    return full_length * std::clamp(force / reference, shortest, 1.0);
+}
+
+void ArrowLabels::attach(const ViewGeometry& view, const AddProp& add, Rgb colour) {
+    view_ = view;
+    add_ = add;
+    colour_ = colour;
+}
+
+void ArrowLabels::clear() {
+    for (auto& actor : actors_) actor->SetVisibility(false);
+    written_.clear();
+    used_ = 0;
+}
+
+void ArrowLabels::add(const double tail[2], double dx, double dy, const std::string& text) {
+    // A few values tell the scale; more would cover the structure.
+    if (written_.size() >= 6 || std::find(written_.begin(), written_.end(), text) != written_.end()) return;
+    written_.push_back(text);
+    if (used_ == actors_.size()) {
+        auto actor = vtkSmartPointer<vtkTextActor>::New();
+        style_text(actor->GetTextProperty(), 12 * view_.text_scale, true);
+        actor->GetTextProperty()->SetColor(colour_.red(), colour_.green(), colour_.blue());
+        actor->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+        add_(actor, false);
+        actors_.push_back(actor);
+    }
+    vtkTextActor* actor = actors_[used_++];
+    // Beyond the tail, on the side the arrow comes from: right-aligned when it comes from the
+    // left, above when it comes from below.
+    const double norm = std::max(std::hypot(dx, dy), 1e-300);
+    const double ux = dx / norm, uy = dy / norm, gap = view_.pixels(4);
+    vtkTextProperty* p = actor->GetTextProperty();
+    p->SetJustification(ux > 0.5 ? VTK_TEXT_RIGHT : ux < -0.5 ? VTK_TEXT_LEFT : VTK_TEXT_CENTERED);
+    p->SetVerticalJustification(uy > 0.5 ? VTK_TEXT_TOP : uy < -0.5 ? VTK_TEXT_BOTTOM : VTK_TEXT_CENTERED);
+    actor->SetInput(text.c_str());
+    actor->SetPosition(tail[0] - gap * ux, tail[1] - gap * uy);
+    actor->SetVisibility(true);
+}
+
+} // namespace plastica::render
