@@ -7,7 +7,7 @@
 
 namespace plastica::cli {
 
-int render_and_report(const std::string& series, const render::RenderOptions& options) {
+int render_and_report(const std::string& series, const render::RenderOptions& options, std::vector<std::string>* notes) {
     try {
         render::RenderOptions with_progress = options;
         Progress progress("drawing", 25);
@@ -17,6 +17,8 @@ int render_and_report(const std::string& series, const render::RenderOptions& op
             };
         const render::RenderReport r = render::render_series(series, with_progress);
         progress.finish();
+        for (const std::string& note : r.notes) std::cerr << "plastica: note: " << note << "\n";
+        if (notes) notes->insert(notes->end(), r.notes.begin(), r.notes.end());
         if (!options.quiet) {
             std::cerr << "rendered " << r.frames << " frames in " << r.seconds << " s (" << r.frames_per_second
                       << " frames per second, " << r.workers << (r.workers == 1 ? " process, " : " processes, ")

@@ -241,7 +241,7 @@ int run_command(const Args& args) {
     if (draws && report.summary.steps > 0) {
         render_options.quiet = quiet;
         const auto t2 = std::chrono::steady_clock::now();
-        if (const int code = render_and_report(folder, render_options); code != ok) return code;
+        if (const int code = render_and_report(folder, render_options, &report.drawing_notes); code != ok) return code;
         report.stage_seconds.emplace_back("drawing", seconds_since(t2));
         try {
             write_run_report((fs::path(folder) / "run.json").string(), report);

@@ -50,6 +50,7 @@ std::string to_json(const RunReport& r) {
     j["reason"] = r.summary.reason;
     // What looks like a unit mistake (io/scene_warnings.hpp): the run went ahead.
     if (const std::vector<std::string> warnings = scene_warnings(*r.model); !warnings.empty()) j["warnings"] = warnings;
+    if (!r.drawing_notes.empty()) j["drawing_notes"] = r.drawing_notes;
     j["steps"] = r.summary.steps;
     j["iterations"] = r.summary.iterations;
     j["cut_steps"] = r.summary.cut_steps;

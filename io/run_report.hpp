@@ -34,6 +34,7 @@ struct RunReport {
     FinalState last;        // of the last converged step
     double peak_load = 0.0; // largest reported load
     double peak_load_displacement = 0.0;
+    std::vector<std::string> drawing_notes; // drawing options that could not act, and why
 };
 
 std::string to_json(const RunReport& report);

@@ -124,7 +124,14 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     };
     bool marked = false;
     if (main.inelastic) marked |= mark("first yield", colour::hinge_yielding_high, [](const CurvePoint& c) { return c.hinge_count > 0; });
-    if (main.unilateral) marked |= mark("contact spreads", colour::contact_force, [](const CurvePoint& c) { return c.contact_count > 1; });
+    // Contact spreads where more nodes touch than at the start and than one (a ring first
+    // touches at a node). A zone that grows from the first loaded step on (a pipe on a bed) has
+    // no such point: the mark would only sit on the origin, so it is left out.
+    if (main.unilateral && main.curve.size() > 2) {
+        const int at_start = std::max(1, main.curve.front().contact_count);
+        if (main.curve[1].contact_count <= at_start)
+            marked |= mark("contact spreads", colour::contact_force, [&](const CurvePoint& c) { return c.contact_count > at_start; });
+    }
     f.legend = runs.size() > 1 || marked || !references.empty();
     return draw_chart(f);
 }

@@ -83,6 +83,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
 
     RenderReport report;
     report.output = options.output.empty() ? series.folder : options.output;
+    report.notes = summary.notes;
     const fs::path out(report.output);
     const fs::path frames = out / "frames";
 

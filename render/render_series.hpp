@@ -39,6 +39,7 @@ struct RenderReport {
     std::string gl_renderer;
     std::string animation;      // the GIF's path, or why there is none
     std::string output;         // the folder written
+    std::vector<std::string> notes; // options that could not act, and why
 };
 
 // Throws RenderError naming the file at fault; frames already written stay.

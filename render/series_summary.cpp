@@ -10,6 +10,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -80,14 +81,23 @@ double round_down_nicely(double x) {
     return decade;
 }
 
-// The factor for magnify = 0 (see the header), from a pass over the displacements.
-double chosen_magnification(const ResultSeries& series) {
+// The factor for magnify = 0 (see the header), from a pass over the displacements, and why it
+// is 1 when it is.
+struct Magnification {
+    double factor = 1.0;
+    std::string why_not; // "" when the factor enlarges
+};
+
+Magnification chosen_magnification(const ResultSeries& series) {
     double largest = 0.0, b[4] = {1e300, -1e300, 1e300, -1e300};
     for (const SeriesStep& step : series.steps) {
         auto grid = read_step(step.file);
         vtkDataArray* u = grid->GetPointData()->GetArray(result::name::displacement);
         vtkDataArray* x0 = grid->GetPointData()->GetArray(result::name::initial_position);
-        if (grid->GetPointData()->GetArray(result::name::contact_force) || !u || !x0) return 1.0;
+        if (grid->GetPointData()->GetArray(result::name::contact_force))
+            return {1.0, "--magnify auto draws at true scale: the structure rests on a base (a rigid base or a "
+                         "tensionless bed), and enlarged it would seem to pass through it; give a factor to enlarge anyway"};
+        if (!u || !x0) return {1.0, "--magnify auto draws at true scale: the series has no displacements"};
         for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i) {
             largest = std::max(largest, std::hypot(u->GetComponent(i, 0), u->GetComponent(i, 1)));
             b[0] = std::min(b[0], x0->GetComponent(i, 0)), b[1] = std::max(b[1], x0->GetComponent(i, 0));
@@ -95,8 +105,14 @@ double chosen_magnification(const ResultSeries& series) {
         }
     }
     const double size = std::max(b[1] - b[0], b[3] - b[2]);
-    if (!(largest > 0.0) || largest >= 0.02 * size) return 1.0;
-    return std::max(1.0, round_down_nicely(0.1 * size / largest));
+    if (!(largest > 0.0)) return {1.0, "--magnify auto draws at true scale: nothing moves"};
+    if (largest >= 0.02 * size) {
+        char why[160];
+        std::snprintf(why, sizeof why, "--magnify auto draws at true scale: the largest displacement is already %.3g %% of the structure's size (auto enlarges below 2 %%)",
+                      100.0 * largest / size);
+        return {1.0, why};
+    }
+    return {std::max(1.0, round_down_nicely(0.1 * size / largest)), ""};
 }
 
 } // namespace
@@ -120,7 +136,13 @@ vtkSmartPointer<vtkUnstructuredGrid> magnified(vtkUnstructuredGrid* step, double
 SeriesSummary summarise(const ResultSeries& series, const std::string& requested, double magnify) {
     SeriesSummary s;
     if (!(magnify >= 0.0) || !std::isfinite(magnify)) throw RenderError("--magnify takes 'auto' or a positive factor");
-    s.magnify = magnify == 0.0 ? chosen_magnification(series) : magnify;
+    if (magnify == 0.0) {
+        const Magnification chosen = chosen_magnification(series);
+        s.magnify = chosen.factor;
+        if (!chosen.why_not.empty()) s.notes.push_back(chosen.why_not);
+    } else {
+        s.magnify = magnify;
+    }
     std::string field = requested;
     const double inf = std::numeric_limits<double>::infinity();
     double b[4] = {inf, -inf, inf, -inf};

@@ -60,6 +60,9 @@ struct SeriesSummary {
     };
     NodalArrows loads, reactions;
     double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
+    // Options that could not act, each saying why (--magnify auto on a structure resting on a
+    // base): told on stderr and kept in run.json.
+    std::vector<std::string> notes;
     // A structure that lands on a base after its own response (an arch snapping onto a floor)
     // is then held by the base's penalty, and its load climbs by orders of magnitude; charts
     // show the load axis over this range (both 0: the whole run) so that the structure's own

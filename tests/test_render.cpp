@@ -384,7 +384,7 @@ TEST_CASE("Frames drawn by several processes are the bytes one process draws", "
     }
 }
 
-TEST_CASE("Every load shows, by its components, and the legend names only the supports there are", "[render][legend]") {
+TEST_CASE("Every load shows by its components and the legend names only the supports there are", "[render][legend]") {
     unsetenv("DISPLAY");
     // The gallery's portal: 35 kN sideways beside 2 800 kN down at the left column's head. The
     // sway load is drawn as its own arrow, pointing right, left of the frame at the beam's height,
@@ -452,6 +452,24 @@ target_load_factor = 1.0
     const auto cool = [](Pixel p) { return p.b > p.r + 40 && p.g < 200; };
     CHECK(count_pixels(frame, cool, 0, structure_right, band_bottom, 1) > 100);
     CHECK(count_pixels(frame, warm, 0, structure_right, band_bottom, 1) == 0);
+}
+
+TEST_CASE("An option that cannot act says why and a chart mark that would sit on the origin is left out", "[render]") {
+    unsetenv("DISPLAY");
+    // A pipe on a tensionless bed: contact grows from the first loaded step, and enlarged
+    // displacements would push the pipe through its bed.
+    const fs::path pipe = solved_series("gallery/pipe_on_soil", 1, "notes");
+    RenderOptions o = small(pipe / "pictures", 1000);
+    o.magnify = 0.0; // auto
+    const RenderReport report = render_series(pipe.string(), o);
+    REQUIRE(report.notes.size() == 1);
+    CHECK_THAT(report.notes.front(), Catch::Contains("--magnify auto draws at true scale") && Catch::Contains("rests on a base"));
+    auto chart = read_png((pipe / "pictures" / "chart.png").string());
+    CHECK(count_pixels(chart, [](Pixel p) { return is(p, colour::contact_force); }) == 0);
+    CHECK(count_pixels(chart, [](Pixel p) { return is(p, colour::hinge_yielding_high); }) > 10); // first yield stays
+    // Magnification a factor can give is taken without a note.
+    o.magnify = 5.0;
+    CHECK(render_series(pipe.string(), o).notes.empty());
 }
 
 TEST_CASE("Labels of values keep every value apart", "[render][legend]") {
