@@ -11,7 +11,7 @@ int render_command(const Args& args) {
     options.add_options()
         ("series", po::value<std::string>()->required(), "result folder or .pvd file")
         ("output,o", po::value<std::string>(), "folder for the pictures (default: the result folder)")
-        ("every", po::value<int>()->default_value(1), "draw every k-th step (first and last always)")
+        ("every", po::value<int>()->default_value(1), "draw every k-th step (the first, the first yield, the peak and the last always)")
         ("quiet,q", "no progress on stderr");
     add_render_options(options);
     po::positional_options_description positional;

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -86,6 +87,68 @@ std::string number(const nlohmann::json& j) {
     return s.str();
 }
 
+// The step of a frame_NNNNNN.png.
+int frame_step(const fs::path& frame) {
+    const std::string stem = frame.stem().string();
+    const auto digits = stem.find_first_of("0123456789");
+    return digits == std::string::npos ? -1 : std::atoi(stem.c_str() + digits);
+}
+
+// The frames named by what happens in them: the start, the first yield, the peak load and the
+// last step, each the drawn frame nearest its step (frames that coincide share one picture and
+// both names). Without a curve.csv: the first, the last and two evenly between.
+std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::path>& frames, const fs::path& curve_csv,
+                                                         const std::string& load_label) {
+    std::vector<std::pair<int, std::string>> events;
+    std::ifstream in(curve_csv);
+    std::string line;
+    if (in && std::getline(in, line)) {
+        std::vector<std::string> header;
+        std::stringstream h(line);
+        for (std::string name; std::getline(h, name, ',');) header.push_back(name);
+        const auto column = [&](const char* name) {
+            const auto at = std::find(header.begin(), header.end(), name);
+            return at == header.end() ? -1 : static_cast<int>(at - header.begin());
+        };
+        const int step_column = column("step"), load_column = column("load"), hinge_column = column("hinge_count");
+        int first = -1, last = -1, yield = -1, peak = -1;
+        double peak_load = -1e300;
+        while (step_column >= 0 && load_column >= 0 && std::getline(in, line)) {
+            std::vector<std::string> cells;
+            std::stringstream r(line);
+            for (std::string cell; std::getline(r, cell, ',');) cells.push_back(cell);
+            if (static_cast<int>(cells.size()) <= std::max({step_column, load_column, hinge_column})) continue;
+            const int step = std::atoi(cells[static_cast<std::size_t>(step_column)].c_str());
+            const double value = std::atof(cells[static_cast<std::size_t>(load_column)].c_str());
+            if (first < 0) first = step;
+            last = step;
+            if (value > peak_load) peak_load = value, peak = step;
+            if (yield < 0 && hinge_column >= 0 && std::atoi(cells[static_cast<std::size_t>(hinge_column)].c_str()) > 0) yield = step;
+        }
+        if (first >= 0) events.push_back({first, "start"});
+        if (yield >= 0) events.push_back({yield, "first yield"});
+        if (peak >= 0) events.push_back({peak, "peak " + load_label});
+        if (last >= 0) events.push_back({last, "last step"});
+    }
+    std::vector<std::pair<fs::path, std::string>> chosen;
+    if (events.empty()) {
+        for (int k = 0; k < 4; ++k) {
+            const fs::path& f = frames[(frames.size() - 1) * static_cast<std::size_t>(k) / 3];
+            if (chosen.empty() || chosen.back().first != f) chosen.push_back({f, k == 0 ? "first drawn" : k == 3 ? "last drawn" : "between"});
+        }
+        return chosen;
+    }
+    std::sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [step, name] : events) {
+        const fs::path& nearest = *std::min_element(frames.begin(), frames.end(), [&](const fs::path& a, const fs::path& b) {
+            return std::abs(frame_step(a) - step) < std::abs(frame_step(b) - step);
+        });
+        if (!chosen.empty() && chosen.back().first == nearest) chosen.back().second += ", " + name;
+        else chosen.push_back({nearest, name});
+    }
+    return chosen;
+}
+
 } // namespace
 
 std::string run_page(const std::string& folder) {
@@ -104,12 +167,22 @@ std::string run_page(const std::string& folder) {
             xml_escaped(run.value("reason", "")) + "</p>\n";
     // The run's figures.
     const std::string load = run.value("load_label", "load"), displacement = run.value("displacement_label", "displacement");
-    std::vector<std::pair<std::string, std::string>> rows{{"steps", number(run.value("steps", 0))},
-                                                          {"Newton iterations", number(run.value("iterations", 0))},
-                                                          {"cut steps", number(run.value("cut_steps", 0))}};
-    if (run.contains("accepted_by"))
-        rows.push_back({"accepted by the residual / by stagnation",
-                        number(run["accepted_by"].value("residual", 0)) + " / " + number(run["accepted_by"].value("stagnation", 0))});
+    const int steps = run.value("steps", 0), refined = run.value("refined_steps", 0);
+    std::vector<std::pair<std::string, std::string>> rows{
+        {"steps (converged, each written)", number(steps)},
+        {"Newton iterations (every attempt, cut and retaken ones too)", number(run.value("iterations", 0))},
+        {"cut steps (attempts that failed, taken again smaller)", number(run.value("cut_steps", 0))}};
+    if (refined > 0)
+        rows.push_back({"refined steps (converged, taken again smaller: a hinge yielded too far in one step)", number(refined)});
+    if (run.contains("accepted_by")) {
+        // Every converged solve counts once by the rule that accepted it: the steps kept and the
+        // refined ones taken again.
+        const int residual = run["accepted_by"].value("residual", 0), stagnation = run["accepted_by"].value("stagnation", 0);
+        std::string accepted = number(residual) + " / " + number(stagnation);
+        if (residual + stagnation == steps + refined && refined > 0)
+            accepted += " (" + number(steps) + " steps kept + " + number(refined) + " refined)";
+        rows.push_back({"converged solves accepted by the residual / by stagnation (the residual stopped falling at round-off)", accepted});
+    }
     if (run.contains("peak"))
         rows.push_back({"peak " + load + " (at " + displacement + ")",
                         number(run["peak"].value("load", 0.0)) + " (" + number(run["peak"].value("control_displacement", 0.0)) + ")"});
@@ -137,14 +210,9 @@ std::string run_page(const std::string& folder) {
             if (f.path().extension() == ".png") frames.push_back(f.path());
     std::sort(frames.begin(), frames.end());
     if (!frames.empty()) {
-        // Up to four key frames: the first, the last and two evenly between.
-        std::vector<std::size_t> chosen;
-        for (int k = 0; k < 4; ++k) {
-            const std::size_t index = (frames.size() - 1) * static_cast<std::size_t>(k) / 3;
-            if (chosen.empty() || chosen.back() != index) chosen.push_back(index);
-        }
         pictures += "<h2>Key frames</h2>\n<div class=\"row\">\n";
-        for (std::size_t index : chosen) pictures += figure(frames[index], frames[index].stem().string());
+        for (const auto& [frame, name] : key_frames(frames, dir / "curve.csv", load))
+            pictures += figure(frame, name + " (" + frame.stem().string() + ")");
         pictures += "</div>\n";
     }
     body += pictures.empty() ? "<p>This folder holds no pictures (the run was made with --no-render or --curves-only).</p>\n"

@@ -16,7 +16,7 @@ struct ReportError : std::runtime_error {
 };
 
 // The page of a result folder: scene, status and reason, the run's figures, chart, contact
-// sheet, shapes, animation and up to four key frames, whichever the folder holds.
+// sheet, shapes, animation and the key frames (start, first yield, peak, last step), whichever the folder holds.
 std::string run_page(const std::string& folder);
 
 // One failing picture of a comparison: the three images (a missing one: empty path) and why.

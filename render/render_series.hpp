@@ -16,7 +16,7 @@ struct RenderOptions {
     std::string output;                   // folder for the pictures (default: the series folder)
     int width = 1280, height = 720;
     std::string field; // point or cell array colouring the structure; empty: yielded_share or bending_moment
-    int every = 1;                        // draw every k-th step (the first and last always)
+    int every = 1;                        // draw every k-th step (the first, the first yield, the peak and the last always)
     std::vector<int> steps;               // draw exactly these step numbers instead (snapshots)
     std::vector<std::string> hide;        // layers left out: initial, base, hinges, contact, supports, loads
     std::vector<std::string> show;        // layers drawn on request: reactions

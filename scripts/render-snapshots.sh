@@ -1,7 +1,7 @@
 #!/bin/sh
 # Renders the key frames of the elastic and inelastic rings at 640x360 into DIR/<scene>/:
 # the unloaded ring, first yield, contact spreading, the first fully plastic hinge, the last step,
-# and the chart; and of every gallery scene (models/gallery/) its first and last frames into
+# and the chart; and of every gallery scene (models/gallery/) its first and last frames, its first yield and its peak into
 # DIR/gallery/<scene>/. Used to update tests/snapshots/ on purpose and by the snapshot test.
 # Usage: render-snapshots.sh PLASTICA DIR [extra render options]
 # PLASTICA_MODELS=FOLDER takes the scene files from FOLDER instead of models/.
@@ -21,7 +21,7 @@ scene_file() { echo "${PLASTICA_MODELS:-$here/models}/$1.toml"; }
 [ -n "${PLASTICA_SNAPSHOT_RINGS_ONLY:-}" ] || for scene in "$here"/models/gallery/*.toml; do
     name=$(basename "$scene" .toml)
     "$plastica" run "$scene" -o "$dir/runs/$name" --no-render --force -q
-    # --every larger than any run: the first and the last step only.
+    # --every larger than any run: the first and the last step, and the first yield and the peak.
     "$plastica" render "$dir/runs/$name" -o "$dir/gallery/$name" --size 640x360 --every 1000000 --no-animation -q "$@"
 done
 rm -rf "$dir/runs"

@@ -727,12 +727,16 @@ TEST_CASE("plastica report writes one page a browser shows whole, and compare --
     REQUIRE(r.code == 0);
     const fs::path page = out / "report.html";
     REQUIRE(fs::exists(page));
-    // Chart, contact sheet, animation and three key frames, all embedded: the page stands alone.
+    // Chart, contact sheet, animation and the key frames named by what happens in them (the
+    // elastic ring peaks at its last step), all embedded: the page stands alone.
     const fs::path moved = scratch("report_page") / "page.html";
     fs::create_directories(moved.parent_path());
     fs::copy_file(page, moved);
     const std::string dom = browser_dom(moved);
-    CHECK_THAT(dom, Catch::Contains("6 of 6 images loaded"));
+    CHECK_THAT(dom, Catch::Contains("5 of 5 images loaded"));
+    CHECK_THAT(dom, Catch::Contains("start (frame_000000)"));
+    CHECK_THAT(dom, Catch::Contains("peak P, last step (frame_000200)"));
+    CHECK_THAT(dom, Catch::Contains("steps (converged, each written)"));
     CHECK_THAT(dom, Catch::Contains("Elastic ring on a unilateral base"));
     CHECK_THAT(dom, Catch::Contains("completed: target displacement reached"));
     CHECK_THAT(dom, Catch::Contains("Newton iterations"));
@@ -759,6 +763,23 @@ TEST_CASE("plastica report writes one page a browser shows whole, and compare --
     const Result bad = command("report " + scratch("report_nothing").string());
     CHECK(bad.code == 2);
     CHECK_THAT(bad.output, Catch::Contains("holds no run.json"));
+}
+
+TEST_CASE("The report names the first yield and the peak among its key frames whatever --every skips", "[cli][report]") {
+    // The gallery's portal, drawn every 8th step: it yields first at step 3 and peaks at step 29,
+    // neither a multiple of 8; both are drawn and shown by name, and the counts add up.
+    const fs::path out = scratch("report_keys");
+    REQUIRE(command("run " + model("gallery/portal_frame.toml") + " -o " + out.string() + " --no-render -q").code == 0);
+    REQUIRE(command("render " + out.string() + " --every 8 --size 640x360 --no-animation -q").code == 0);
+    REQUIRE(command("report " + out.string()).code == 0);
+    std::ifstream in(out / "report.html");
+    const std::string page((std::istreambuf_iterator<char>(in)), {});
+    CHECK_THAT(page, Catch::Contains("first yield (frame_000003)"));
+    CHECK_THAT(page, Catch::Contains("peak load factor (frame_000029)"));
+    CHECK_THAT(page, Catch::Contains("last step (frame_000054)"));
+    CHECK(fs::exists(out / "frames" / "frame_000003.png"));
+    CHECK(fs::exists(out / "frames" / "frame_000029.png"));
+    CHECK_THAT(page, Catch::Contains("72 / 0 (54 steps kept + 18 refined)"));
 }
 
 TEST_CASE("Likely unit mistakes are warned of on stderr and in run.json, and the run goes on", "[cli][warnings]") {
