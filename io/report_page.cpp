@@ -149,6 +149,74 @@ std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::p
     return chosen;
 }
 
+// A table with a header row; each row's cells already text.
+std::string table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+    std::string t = "<table>\n<tr>";
+    for (const std::string& h : header) t += "<th>" + xml_escaped(h) + "</th>";
+    t += "</tr>\n";
+    for (const auto& row : rows) {
+        t += "<tr>";
+        for (const std::string& cell : row) t += "<td>" + xml_escaped(cell) + "</td>";
+        t += "</tr>\n";
+    }
+    return t + "</table>\n";
+}
+
+std::string point(const nlohmann::json& at) {
+    return at.is_array() && at.size() == 2 ? "(" + number(at[0]) + ", " + number(at[1]) + ")" : "";
+}
+
+// The model the run computed (run.json "model", io/model_description.hpp): sections with their
+// capacities, supports, loads by pattern, the analysis and its stages.
+std::string model_section(const nlohmann::json& model) {
+    std::string html = "<h2>Model</h2>\n";
+    auto value = [](const nlohmann::json& j, const char* key) { return j.contains(key) ? number(j[key]) : std::string("–"); };
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& s : model.value("sections", nlohmann::json::array()))
+        rows.push_back({s.value("name", ""), value(s, "E"), value(s, "area"), value(s, "inertia"), value(s, "fy"),
+                        s.value("plasticity", ""), value(s, "squash_load"), value(s, "plastic_moment")});
+    if (!rows.empty())
+        html += "<h3>Sections</h3>\n" + table({"section", "E", "A", "I", "fy", "plasticity", "N_y (squash load)", "M_p at N = 0"}, rows);
+    rows.clear();
+    for (const auto& s : model.value("supports", nlohmann::json::array())) {
+        std::string fixed;
+        for (const auto& d : s.value("fixed", nlohmann::json::array())) fixed += (fixed.empty() ? "" : ", ") + d.get<std::string>();
+        rows.push_back({point(s.value("at", nlohmann::json())), fixed});
+    }
+    if (!rows.empty()) html += "<h3>Supports</h3>\n" + table({"at", "fixed"}, rows);
+    rows.clear();
+    for (const auto& p : model.value("load_patterns", nlohmann::json::array()))
+        if (p.value("loaded_nodes", 0) > 0 || p.contains("pressure_elements") || p.contains("prescribed_displacements"))
+            rows.push_back({p.value("name", ""), value(p, "loaded_nodes"), value(p, "sum_fx"), value(p, "sum_fy"), value(p, "sum_moment"),
+                        value(p, "pressure_elements"), value(p, "prescribed_displacements")});
+    if (!rows.empty())
+        html += "<h3>Loads by pattern (at factor 1; line loads lumped to nodes)</h3>\n" +
+                table({"pattern", "loaded nodes", "Σ fx", "Σ fy", "Σ moment", "elements under pressure", "prescribed displacements"}, rows);
+    if (model.contains("analysis")) {
+        const auto& a = model["analysis"];
+        std::string target;
+        if (a.contains("target") && a["target"].is_object())
+            for (const auto& [key, v] : a["target"].items()) target = key + " = " + number(v);
+        std::string control;
+        if (a.contains("control")) control = a["control"].value("dof", "") + " at " + point(a["control"].value("at", nlohmann::json()));
+        rows = {{"scheme", a.value("scheme", "")}, {"pattern driven", a.value("pattern", "")}, {"first increment", value(a, "increment")},
+                {"adaptive increments", a.value("adaptive", false) ? "yes" : "no"}, {"target", target}, {"controlled or reported DOF", control},
+                {"residual tolerance", value(a, "residual_tolerance")}, {"Newton iterations per step at most", value(a, "max_iterations")},
+                {"steps at most", value(a, "max_steps")}};
+        html += "<h3>Analysis</h3>\n" + table({"setting", "value"}, rows);
+    }
+    rows.clear();
+    int stage = 2;
+    for (const auto& st : model.value("stages", nlohmann::json::array())) {
+        std::string target;
+        if (st.contains("target") && st["target"].is_object())
+            for (const auto& [key, v] : st["target"].items()) target = key + " = " + number(v);
+        rows.push_back({std::to_string(stage++), st.value("scheme", ""), st.value("pattern", ""), target});
+    }
+    if (!rows.empty()) html += "<h3>Further stages</h3>\n" + table({"stage", "scheme", "pattern driven", "target"}, rows);
+    return html;
+}
+
 } // namespace
 
 std::string run_page(const std::string& folder) {
@@ -196,6 +264,7 @@ std::string run_page(const std::string& folder) {
     body += "<table>\n";
     for (const auto& [name, value] : rows) body += "<tr><th>" + xml_escaped(name) + "</th><td>" + xml_escaped(value) + "</td></tr>\n";
     body += "</table>\n";
+    if (run.contains("model")) body += model_section(run["model"]);
     // The pictures the folder holds.
     std::string pictures;
     for (const auto& [file, caption] : std::vector<std::pair<std::string, std::string>>{

@@ -1,5 +1,6 @@
 #include "run_report.hpp"
 
+#include "model_description.hpp"
 #include "scene_warnings.hpp"
 
 #include "atomic_file.hpp"
@@ -81,6 +82,7 @@ std::string to_json(const RunReport& r) {
         j["final"]["reactions"] = reactions;
     }
     j["peak"] = {{"load", r.peak_load}, {"control_displacement", r.peak_load_displacement}};
+    j["model"] = describe_model(*r.model);
     Json seconds = Json::object();
     for (const auto& [stage, s] : r.stage_seconds) seconds[stage] = s;
     j["seconds"] = seconds;

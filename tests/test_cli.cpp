@@ -780,6 +780,15 @@ TEST_CASE("The report names the first yield and the peak among its key frames wh
     CHECK(fs::exists(out / "frames" / "frame_000003.png"));
     CHECK(fs::exists(out / "frames" / "frame_000029.png"));
     CHECK_THAT(page, Catch::Contains("72 / 0 (54 steps kept + 18 refined)"));
+    // The model: the HEB 300's capacities as `plastica section` gives them, both clamps, the loads.
+    CHECK_THAT(page, Catch::Contains("<h2>Model</h2>"));
+    CHECK_THAT(page, Catch::Contains("M_p at N = 0"));
+    const nlohmann::json run = read_json(out / "run.json");
+    const auto& section = run["model"]["sections"][0];
+    CHECK(section["squash_load"].get<double>() == Approx(section["fy"].get<double>() * section["area"].get<double>()).epsilon(1e-3));
+    CHECK(run["model"]["supports"].size() == 2);
+    CHECK(run["model"]["load_patterns"][0]["sum_fy"].get<double>() == Approx(-5600.0));
+    CHECK(run["model"]["load_patterns"][0]["sum_fx"].get<double>() == Approx(35.0));
 }
 
 TEST_CASE("Likely unit mistakes are warned of on stderr and in run.json, and the run goes on", "[cli][warnings]") {
