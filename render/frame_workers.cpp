@@ -40,10 +40,6 @@ void send_line(int fd, std::string line) {
 
 [[noreturn]] void work(int fd, int worker, int workers,
                        const std::function<void(int, int, const FrameDone&)>& draw_share) {
-    // llvmpipe rasterises in the worker's own thread: the workers already fill the cores, and
-    // llvmpipe's rasteriser threads would only contend with them (measured: 77 against 74 frames
-    // per second on two cores).
-    setenv("LP_NUM_THREADS", "0", 0);
     int status = 0;
     try {
         draw_share(worker, workers, [fd](std::size_t frame) { send_line(fd, "done " + std::to_string(frame)); });

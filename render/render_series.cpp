@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <future>
 #include <iostream>
@@ -88,6 +89,10 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     std::vector<ReferencePoints> references;
     for (const std::string& file : options.reference_points) references.push_back(read_reference_points(file));
 
+    // llvmpipe rasterises in the drawing thread itself: its own rasteriser threads only contend
+    // with the other drawing processes, and even alone they cost more in hand-offs than they
+    // save on frames this simple (measured: 201 frames in one process 3.6 s against 4.3 s).
+    setenv("LP_NUM_THREADS", "0", 0);
     RenderReport report;
     report.output = options.output.empty() ? series.folder : options.output;
     report.notes = summary.notes;
