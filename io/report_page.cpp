@@ -139,7 +139,9 @@ std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::p
         return chosen;
     }
     std::sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [step, name] : events) {
+    for (const auto& event : events) {
+        const int step = event.first; // named, not a structured binding: lambdas capture it (C++17)
+        const std::string& name = event.second;
         const fs::path& nearest = *std::min_element(frames.begin(), frames.end(), [&](const fs::path& a, const fs::path& b) {
             return std::abs(frame_step(a) - step) < std::abs(frame_step(b) - step);
         });
