@@ -34,10 +34,14 @@ Json target(const std::optional<double>& load_factor, const std::optional<double
     return nullptr;
 }
 
+const char* dof_name(int dof) {
+    static const char* names[] = {"ux", "uy", "rz"};
+    return names[dof];
+}
+
 Json dof(const Model& m, const DofRef& d) {
-    const char* names[] = {"ux", "uy", "rz"};
     const Node& n = m.nodes.at(static_cast<std::size_t>(d.node));
-    return {{"at", {n.x, n.y}}, {"dof", names[d.dof]}};
+    return {{"at", {n.x, n.y}}, {"dof", dof_name(d.dof)}};
 }
 
 } // namespace
@@ -61,9 +65,8 @@ Json describe_model(const Model& m) {
     Json supports = Json::array();
     for (const Support& s : m.supports) {
         Json fixed = Json::array();
-        const char* names[] = {"ux", "uy", "rz"};
         for (int k = 0; k < dofs_per_node; ++k)
-            if (s.fixed[static_cast<std::size_t>(k)]) fixed.push_back(names[k]);
+            if (s.fixed[static_cast<std::size_t>(k)]) fixed.push_back(dof_name(k));
         const Node& n = m.nodes.at(static_cast<std::size_t>(s.node));
         supports.push_back({{"at", {n.x, n.y}}, {"fixed", fixed}});
     }

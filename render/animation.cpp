@@ -112,17 +112,6 @@ void remove_quietly(const std::string& path) {
     std::filesystem::remove(path, ec);
 }
 
-bool write_all_to(int fd, const char* p, std::size_t left) {
-    while (left > 0) {
-        const ssize_t n = write(fd, p, left);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        p += n;
-        left -= static_cast<std::size_t>(n);
-    }
-    return true;
-}
-
 } // namespace
 
 GifWriter::GifWriter(std::string gif_path, int width, int height, int frames_per_second)
@@ -180,8 +169,15 @@ void GifWriter::add(std::size_t k) {
     const int fd = open(frames_.c_str(), O_RDONLY | O_CLOEXEC);
     const ssize_t got = fd < 0 ? -1 : pread(fd, frame.data(), frame.size(), static_cast<off_t>(k * frame_bytes_));
     if (fd >= 0) close(fd);
-    if (got != static_cast<ssize_t>(frame.size())) failure_ = "no animation: frame " + std::to_string(k) + " is missing";
-    else if (!write_all_to(palette_input_, frame.data(), frame.size())) failure_ = "no animation: ffmpeg stopped reading frames";
+    if (got != static_cast<ssize_t>(frame.size())) {
+        failure_ = "no animation: frame " + std::to_string(k) + " is missing";
+        return;
+    }
+    try {
+        write_all(palette_input_, frame.data(), frame.size(), "ffmpeg's input");
+    } catch (const std::exception&) {
+        failure_ = "no animation: ffmpeg stopped reading frames";
+    }
 }
 
 AnimationResult GifWriter::finish(std::size_t count) {
@@ -213,16 +209,10 @@ AnimationResult GifWriter::finish(std::size_t count) {
 void write_animation_frame(const std::string& frame_file, std::size_t k, const std::string& rgb) {
     const int fd = open(frame_file.c_str(), O_WRONLY | O_CLOEXEC);
     if (fd < 0) return; // the animation then reports the frame missing
-    const char* p = rgb.data();
-    std::size_t left = rgb.size();
-    off_t at = static_cast<off_t>(k * rgb.size());
-    while (left > 0) {
-        const ssize_t n = pwrite(fd, p, left, at);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
-        p += n;
-        at += n;
-        left -= static_cast<std::size_t>(n);
+    try {
+        write_all_at(fd, rgb, static_cast<long>(k * rgb.size()), frame_file);
+    } catch (const std::exception&) {
+        // As above: a frame not written is reported missing when the animation reads it.
     }
     close(fd);
 }

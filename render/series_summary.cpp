@@ -21,11 +21,13 @@ namespace {
 
 bool signed_quantity(const std::string& array) {
     using result::Quantity;
-    for (const result::Array& a : result::arrays())
-        if (a.name == array)
-            return a.quantity == Quantity::force || a.quantity == Quantity::moment || a.quantity == Quantity::length ||
-                   a.quantity == Quantity::rotation || a.quantity == Quantity::curvature;
-    return false;
+    try {
+        const Quantity q = result::find(array).quantity;
+        return q == Quantity::force || q == Quantity::moment || q == Quantity::length || q == Quantity::rotation ||
+               q == Quantity::curvature;
+    } catch (const std::out_of_range&) {
+        return false; // not one of Plastica's arrays
+    }
 }
 
 std::string array_names(vtkUnstructuredGrid* grid) {

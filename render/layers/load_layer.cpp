@@ -10,17 +10,10 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <cmath>
-#include <cstdio>
 
 namespace plastica::render {
 
 namespace {
-
-std::string short_number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return text;
-}
 
 // Arrows at nodes from a point array of forces and one of moments: the applied loads, or the
 // reactions of the supports (forces on the structure, drawn the same way).
@@ -90,9 +83,9 @@ public:
 
     std::string note() const override {
         std::string text;
-        if (stats_.max_force > 0) text = "longest: " + short_number(scale_.reference) + unit(summary_.force_unit);
+        if (stats_.max_force > 0) text = "longest: " + number(scale_.reference) + unit(summary_.force_unit);
         if (stats_.max_moment > 0)
-            text += (text.empty() ? "" : "\n") + std::string("moment ") + short_number(stats_.max_moment) +
+            text += (text.empty() ? "" : "\n") + std::string("moment ") + number(stats_.max_moment) +
                     unit(array_unit(summary_, result::name::moment_i));
         // How arrows off the scale are drawn (ArrowScale), said once under the entry.
         const bool spikes = scale_.reference < stats_.max_force;
