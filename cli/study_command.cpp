@@ -26,14 +26,14 @@ int study_command(const Args& args) {
     options.add_options()
         ("scene", po::value<std::string>()->required(), "scene file (TOML)")
         ("vary", po::value<std::vector<std::string>>()->composing(),
-         "NAME=v1,v2,… with NAME elements, fibres, integration_points, segments or increment (repeatable); plasticity=hinges,distributed runs every ladder with each method against the last method's finest level")
-        ("reference", po::value<std::string>(), "exact, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form)")
+         "NAME=v1,v2,… with NAME elements, fibres, integration_points, segments or increment (repeatable); plasticity=hinges,distributed runs every ladder with each method, each against its own reference")
+        ("reference", po::value<std::string>(), "exact, extrapolated, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form; else extrapolated when methods are compared, finest otherwise)")
         ("at", po::value<std::string>(), "displacements where the error is reported, e.g. 20,40,60")
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>/study)");
     po::positional_options_description positional;
     positional.add("scene", 1);
     po::variables_map vm;
-    if (auto code = parse_options(args, "plastica study SCENE --vary elements=10,20,50 [--vary …] [--reference exact|finest|FILE]",
+    if (auto code = parse_options(args, "plastica study SCENE --vary elements=10,20,50 [--vary …] [--reference exact|extrapolated|finest|FILE]",
                                   options, positional, vm))
         return *code;
     StudyOptions o;
@@ -45,7 +45,10 @@ int study_command(const Args& args) {
         if (!vm.count("vary")) throw StudyError("give at least one --vary NAME=v1,v2,…");
         for (const std::string& v : vm["vary"].as<std::vector<std::string>>()) add_variation(o, v);
         if (o.ladders.empty()) throw StudyError("--vary plasticity=… compares methods over a ladder: add --vary elements=… (or fibres, increment)");
-        o.reference = vm.count("reference") ? vm["reference"].as<std::string>() : (model.report.exact.empty() ? "finest" : "exact");
+        o.reference = vm.count("reference")         ? vm["reference"].as<std::string>()
+                      : !model.report.exact.empty() ? "exact"
+                      : !o.methods.empty()          ? "extrapolated"
+                                                    : "finest";
         if (vm.count("at")) o.at = parse_numbers(vm["at"].as<std::string>(), "--at");
         report = run_study(o);
     } catch (const SceneError& e) {
@@ -68,7 +71,13 @@ int study_command(const Args& args) {
         std::cerr << "plastica: cannot draw study.png: " << e.what() << "\n";
         return bad_input;
     }
-    std::cout << "-> " << (folder / "study.csv").string() << ", " << (folder / "study.png").string() << "\n";
+    std::cout << "-> " << (folder / "study.csv").string() << ", " << (folder / "study.png").string();
+    if (!report.limits.empty()) {
+        std::ofstream limits(folder / "limits.csv");
+        write_limits_csv(limits, report);
+        std::cout << ", " << (folder / "limits.csv").string();
+    }
+    std::cout << "\n";
     return ok;
 }
 

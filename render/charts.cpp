@@ -86,6 +86,9 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& f) {
     chart.place_in(chart_area);
     window.add(band_area);
     window.add(chart_area);
+    // A log axis becomes active while the first frame is painted, after the plots have laid out
+    // their points on the linear scale: on log axes the lines only appear from the second frame.
+    if (f.log_scale) window.capture();
     return window.capture();
 }
 

@@ -2,6 +2,7 @@
 
 #include "figure_text.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace plastica::render {
@@ -34,6 +35,15 @@ ChartFigure study_chart(const std::string& scene, const StudyReport& report) {
         chart.series.push_back(dots);
         ++k;
     }
+    // The distance between methods' limits as a level across the time axis: refining further than
+    // where a method's error falls below it cannot decide between the methods.
+    double t0 = 1e300, t1 = 0.0;
+    for (const StudyLevel& l : report.levels)
+        if (l.seconds > 0) t0 = std::min(t0, l.seconds), t1 = std::max(t1, l.seconds);
+    for (const StudyReport::LimitGap& g : report.limit_gaps)
+        if (g.gap.max > 0 && t1 > 0)
+            chart.series.push_back({"limits of " + g.method + " and " + g.against + " apart (" + g.parameter + ")", {t0, t1},
+                                    {g.gap.max, g.gap.max}, {110, 110, 110}, 1.5f});
     return chart;
 }
 

@@ -100,46 +100,63 @@ std::string span_text(const Curve& c) {
 StudyReport run_study(const StudyOptions& options) {
     StudyReport report;
     const Model base = read_scene(options.scene);
+    const bool compared = !options.methods.empty();
+    const bool extrapolated = options.reference == "extrapolated", finest_run = options.reference == "finest";
     std::optional<Curve> fixed_reference;
     if (options.reference == "exact") {
         fixed_reference = exact_curve(base);
         report.reference = "exact: " + base.report.exact;
-    } else if (options.reference != "finest") {
+    } else if (extrapolated) {
+        report.reference = compared ? "each method's own limit, extrapolated from its three finest levels"
+                                    : "the limit extrapolated from the three finest levels";
+    } else if (finest_run) {
+        report.reference = compared ? "each method's own finest level" : "finest level of each parameter";
+    } else {
         fixed_reference = read_curve_csv(options.reference);
         report.reference = "curve " + options.reference;
-    } else {
-        report.reference = "finest level of each parameter";
     }
     // Without a method comparison, one pass with the scene's own plasticity.
-    const std::vector<std::string> methods = options.methods.empty() ? std::vector<std::string>{""} : options.methods;
+    const std::vector<std::string> methods = compared ? options.methods : std::vector<std::string>{""};
     for (const Ladder& ladder : options.ladders) {
         if (ladder.levels.size() < 2) throw StudyError("--vary " + ladder.parameter + " needs at least two levels");
+        if (extrapolated && ladder.levels.size() < 3)
+            throw StudyError("--vary " + ladder.parameter + ": a limit is extrapolated from three levels or more; give a third level, "
+                             "or --reference finest|exact|FILE");
+        std::vector<double> hs;
+        for (double level : ladder.levels) hs.push_back(step_size(ladder.parameter, level));
+        const std::size_t finest = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
+
         std::vector<std::vector<Solved>> runs; // [method][level]
+        std::vector<Curve> references;         // [method]
         for (const std::string& method : methods) {
             runs.emplace_back();
             for (double level : ladder.levels)
                 runs.back().push_back(solve(scene_variant(options.scene, ladder.parameter, level, method), options.min_seconds));
-        }
-        // The finest: most elements or fibres, smallest increment, of the last method.
-        std::size_t finest = 0;
-        for (std::size_t i = 1; i < ladder.levels.size(); ++i)
-            if (step_size(ladder.parameter, ladder.levels[i]) < step_size(ladder.parameter, ladder.levels[finest])) finest = i;
-        const Curve& reference = fixed_reference ? *fixed_reference : runs.back()[finest].curve;
-        if (!fixed_reference && !options.methods.empty()) {
-            // Named: the run every method is measured against.
-            std::ostringstream name;
-            name << methods.back() << " plasticity with " << ladder.parameter << " = " << ladder.levels[finest];
-            report.reference = &ladder == &options.ladders.front() ? name.str() : report.reference + "; " + name.str();
+            if (ladder.levels.size() >= 3) {
+                std::vector<Curve> curves;
+                for (const Solved& run : runs.back()) curves.push_back(run.curve);
+                StudyReport::Limit limit{method, ladder.parameter, extrapolated_limit(curves, hs), {}};
+                for (std::size_t k : limit.limit.used) limit.levels.push_back(ladder.levels[k]);
+                report.limits.push_back(limit);
+            }
+            references.push_back(fixed_reference ? *fixed_reference
+                                 : extrapolated   ? report.limits.back().limit.curve
+                                                  : runs.back()[finest].curve);
         }
         if (report.at.empty()) {
             report.at = options.at;
             if (report.at.empty()) {
-                const CurveError span = curve_error(runs.back()[finest].curve, reference, {});
-                for (double f : {0.25, 0.5, 0.75, 1.0}) report.at.push_back(span.from + f * (span.to - span.from));
+                // Quarters of the range every method's finest level shares with its reference.
+                double from = -1e300, to = 1e300;
+                for (std::size_t m = 0; m < methods.size(); ++m) {
+                    const CurveError span = curve_error(runs[m][finest].curve, references[m], {});
+                    from = std::max(from, span.from), to = std::min(to, span.to);
+                }
+                for (double f : {0.25, 0.5, 0.75, 1.0}) report.at.push_back(from + f * (to - from));
             }
         }
         for (std::size_t m = 0; m < methods.size(); ++m) {
-            std::vector<double> hs, errors;
+            std::vector<double> level_h, errors;
             for (std::size_t i = 0; i < runs[m].size(); ++i) {
                 const Solved& run = runs[m][i];
                 StudyLevel l;
@@ -151,22 +168,29 @@ StudyReport run_study(const StudyOptions& options) {
                 l.steps = run.summary.steps;
                 l.iterations = run.summary.iterations;
                 l.status = run.summary.reason;
-                l.is_reference = !fixed_reference && m + 1 == methods.size() && i == finest;
-                l.error = curve_error(run.curve, reference, report.at);
+                l.is_reference = finest_run && i == finest;
+                l.error = curve_error(run.curve, references[m], report.at);
                 if (std::isnan(l.error.max)) {
                     std::ostringstream why;
                     why << ladder.parameter << " = " << l.level << ": its curve has no displacement in common with "
-                        << (fixed_reference ? "the reference" : "the finest level") << " (" << span_text(run.curve) << " against "
-                        << span_text(reference) << "): there is no error to measure";
+                        << (fixed_reference ? "the reference" : extrapolated ? "the extrapolated limit" : "the finest level") << " ("
+                        << span_text(run.curve) << " against " << span_text(references[m]) << "): there is no error to measure";
                     throw StudyError(why.str());
                 }
                 if (!l.is_reference) {
-                    hs.push_back(step_size(ladder.parameter, l.level));
+                    level_h.push_back(hs[i]);
                     errors.push_back(l.error.max);
                 }
                 report.levels.push_back(l);
             }
-            report.observed_order.push_back({methods[m], ladder.parameter, slope(hs, errors)});
+            report.observed_order.push_back({methods[m], ladder.parameter, slope(level_h, errors)});
+        }
+        // How far apart the methods' limits are: the model difference no refinement removes.
+        if (compared && ladder.levels.size() >= 3) {
+            const auto first = report.limits.end() - static_cast<std::ptrdiff_t>(methods.size());
+            for (auto limit = first; limit + 1 != report.limits.end(); ++limit)
+                report.limit_gaps.push_back({ladder.parameter, limit->method, methods.back(),
+                                             curve_error(limit->limit.curve, report.limits.back().limit.curve, report.at)});
         }
     }
     return report;

@@ -60,6 +60,40 @@ void print_study_table(std::ostream& out, const std::string& scene, const StudyR
     for (const StudyReport::Order& o : report.observed_order)
         out << formatted("observed order of convergence in %s%s: %.2f\n", o.parameter.c_str(),
                          o.method.empty() ? "" : (" with " + o.method).c_str(), o.order);
+    for (const StudyReport::Limit& l : report.limits) out << limit_text(l) << "\n";
+    for (const StudyReport::LimitGap& g : report.limit_gaps) {
+        out << formatted("limits apart in %s: %s against %s: max %s", g.parameter.c_str(), g.method.c_str(), g.against.c_str(),
+                         percent(g.gap.max).c_str());
+        for (std::size_t i = 0; i < report.at.size() && i < g.gap.at.size(); ++i)
+            out << formatted(", %s at %g", percent(g.gap.at[i]).c_str(), report.at[i]);
+        out << "\n";
+    }
+}
+
+std::string limit_text(const StudyReport::Limit& l) {
+    std::ostringstream s;
+    s << "limit" << (l.method.empty() ? "" : " of " + l.method) << " in " << l.parameter << ": ";
+    const auto& levels = l.levels;
+    if (l.limit.extrapolated)
+        s << formatted("extrapolated from %s = %g, %g, %g at observed order %.2f", l.parameter.c_str(), levels[0], levels[1], levels[2],
+                       l.limit.order);
+    else
+        s << formatted("the finest level, %s = %g, not extrapolated: its curves change by %s (RMS, of the peak) from %g to %g and "
+                       "by %s from %g to %g, %s",
+                       l.parameter.c_str(), levels[2], percent(l.limit.change[0]).c_str(), levels[0], levels[1],
+                       percent(l.limit.change[1]).c_str(), levels[1], levels[2],
+                       std::isnan(l.limit.order) ? "which does not shrink"
+                                                 : formatted("an observed order of %.2f, below %.1f", l.limit.order, minimum_order).c_str());
+    return s.str();
+}
+
+void write_limits_csv(std::ostream& out, const StudyReport& report) {
+    out.precision(12);
+    out << "method,parameter,extrapolated,order,displacement,load\n";
+    for (const StudyReport::Limit& l : report.limits)
+        for (std::size_t i = 0; i < l.limit.curve.displacement.size(); ++i)
+            out << l.method << ',' << l.parameter << ',' << l.limit.extrapolated << ',' << l.limit.order << ','
+                << l.limit.curve.displacement[i] << ',' << l.limit.curve.load[i] << "\n";
 }
 
 std::vector<double> parse_numbers(const std::string& text, const std::string& what) {

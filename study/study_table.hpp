@@ -12,8 +12,14 @@ namespace plastica {
 // One row per level: method, parameter, level, seconds, repeats, steps, iterations, status,
 // is_reference, max_error, rms_error, then error_at_<d> for each reported displacement.
 void write_study_csv(std::ostream& out, const StudyReport& report);
-// The table of levels with errors in per cent, then the observed orders.
+// The table of levels with errors in per cent, then the observed orders, the limits and how far
+// the methods' limits lie apart.
 void print_study_table(std::ostream& out, const std::string& scene, const StudyReport& report, bool methods_compared);
+// "limit of hinges in elements: extrapolated from elements = 16, 32, 64 at observed order 1.02".
+std::string limit_text(const StudyReport::Limit& limit);
+// The limit curves: method, parameter, extrapolated, order, displacement, load (one row a point);
+// a method's rows can be given back to `--reference`.
+void write_limits_csv(std::ostream& out, const StudyReport& report);
 
 // Numbers separated by commas; throws StudyError naming `what` for anything else.
 std::vector<double> parse_numbers(const std::string& text, const std::string& what);

@@ -586,3 +586,23 @@ TEST_CASE("The legend goes to the corner the curves leave free", "[render]") {
     CHECK(count_pixels(chart, dark, 0.6, 0.98, band_bottom + 0.01, 0.4) > 50);
     CHECK(count_pixels(chart, dark, 0.15, 0.45, band_bottom + 0.01, 0.4) == 0);
 }
+
+TEST_CASE("A chart on log axes draws its lines", "[render]") {
+    // An error against run time, one decade each way: the line and its markers must be on the
+    // picture (a log axis becomes active only while a frame is painted).
+    unsetenv("DISPLAY");
+    ChartFigure f;
+    f.title = "log axes";
+    f.x_label = "time";
+    f.y_label = "error";
+    f.series = {{"a ladder", {0.001, 0.01, 0.1}, {0.1, 0.03, 0.01}, {230, 120, 20}, 3.0f}};
+    f.legend = false;
+    f.log_scale = true;
+    f.width = 640;
+    f.height = 360;
+    vtkSmartPointer<vtkImageData> chart = draw_chart(f);
+    const auto orange = [](Pixel p) { return p.r > 200 && p.g > 90 && p.g < 150 && p.b < 60; };
+    // The line runs from the left third to the right third of the plot.
+    CHECK(count_pixels(chart, orange, 0.15, 0.35, band_bottom, 1) > 100);
+    CHECK(count_pixels(chart, orange, 0.65, 0.9, band_bottom, 1) > 100);
+}
