@@ -15,6 +15,7 @@
 
 #include <vtkImageData.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -27,7 +28,7 @@ int study_command(const Args& args) {
         ("scene", po::value<std::string>()->required(), "scene file (TOML)")
         ("vary", po::value<std::vector<std::string>>()->composing(),
          "NAME=v1,v2,… with NAME elements, fibres, integration_points, segments or increment (repeatable); plasticity=hinges,distributed runs every ladder with each method, each against its own reference")
-        ("reference", po::value<std::string>(), "exact, extrapolated, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form; else extrapolated when methods are compared, finest otherwise)")
+        ("reference", po::value<std::string>(), "exact, extrapolated, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form; else extrapolated when methods are compared over three levels or more, finest otherwise)")
         ("at", po::value<std::string>(), "displacements where the error is reported, e.g. 20,40,60")
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>/study)");
     po::positional_options_description positional;
@@ -45,10 +46,11 @@ int study_command(const Args& args) {
         if (!vm.count("vary")) throw StudyError("give at least one --vary NAME=v1,v2,…");
         for (const std::string& v : vm["vary"].as<std::vector<std::string>>()) add_variation(o, v);
         if (o.ladders.empty()) throw StudyError("--vary plasticity=… compares methods over a ladder: add --vary elements=… (or fibres, increment)");
-        o.reference = vm.count("reference")         ? vm["reference"].as<std::string>()
-                      : !model.report.exact.empty() ? "exact"
-                      : !o.methods.empty()          ? "extrapolated"
-                                                    : "finest";
+        const bool three_levels = std::all_of(o.ladders.begin(), o.ladders.end(), [](const Ladder& l) { return l.levels.size() >= 3; });
+        o.reference = vm.count("reference")             ? vm["reference"].as<std::string>()
+                      : !model.report.exact.empty()     ? "exact"
+                      : !o.methods.empty() && three_levels ? "extrapolated"
+                                                        : "finest";
         if (vm.count("at")) o.at = parse_numbers(vm["at"].as<std::string>(), "--at");
         report = run_study(o);
     } catch (const SceneError& e) {

@@ -48,6 +48,8 @@ Json dof(const Model& m, const DofRef& d) {
 
 Json describe_model(const Model& m) {
     Json j;
+    if (!m.report.length_unit.empty() || !m.report.force_unit.empty())
+        j["units"] = {{"length", m.report.length_unit}, {"force", m.report.force_unit}};
     Json sections = Json::array();
     for (const SectionSpec& s : m.sections) {
         Json e = {{"name", s.name}, {"E", s.E}, {"area", s.area}, {"inertia", s.inertia}, {"plasticity", plasticity_name(s.plasticity)}};

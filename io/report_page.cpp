@@ -177,8 +177,14 @@ std::string model_section(const nlohmann::json& model) {
     for (const auto& s : model.value("sections", nlohmann::json::array()))
         rows.push_back({s.value("name", ""), value(s, "E"), value(s, "area"), value(s, "inertia"), value(s, "fy"),
                         s.value("plasticity", ""), value(s, "squash_load"), value(s, "plastic_moment")});
+    // Column heads carry the scene's units where it names them ([units] or [report]).
+    const std::string L = model.contains("units") ? model["units"].value("length", "") : "";
+    const std::string F = model.contains("units") ? model["units"].value("force", "") : "";
+    auto in = [&](const std::string& head, const std::string& unit) { return L.empty() || F.empty() ? head : head + " (" + unit + ")"; };
     if (!rows.empty())
-        html += "<h3>Sections</h3>\n" + table({"section", "E", "A", "I", "fy", "plasticity", "N_y (squash load)", "M_p at N = 0"}, rows);
+        html += "<h3>Sections</h3>\n" + table({"section", in("E", F + "/" + L + "²"), in("A", L + "²"), in("I", L + "⁴"), in("fy", F + "/" + L + "²"),
+                                                "plasticity", in("N_y (squash load)", F), in("M_p at N = 0", F + "·" + L)},
+                                               rows);
     rows.clear();
     for (const auto& s : model.value("supports", nlohmann::json::array())) {
         std::string fixed;

@@ -32,6 +32,7 @@ public:
     Model build() {
         TomlTableReader top(root_, file_, "");
         read_scene_table(top);
+        read_units(top);
         read_materials(top);
         read_sections(top);
         read_nodes(top);
@@ -48,7 +49,7 @@ public:
         read_analysis(top);
         read_stages(top);
         read_report(top);
-        top.finish({"scene", "material", "section", "node", "line", "arc", "element", "support",
+        top.finish({"scene", "units", "material", "section", "node", "line", "arc", "element", "support",
                     "load", "distributed_load", "prescribed", "foundation", "analysis", "stage", "report"});
         if (!model_.loaded() && !model_.has_moving_base())
             throw SceneError(file_, 1, "load",
@@ -78,7 +79,7 @@ private:
     void read_scene_table(TomlTableReader& top) {
         const toml::table* t = top.table("scene");
         if (!t) top.fail("", "missing required table [scene] (with a 'name')");
-        TomlTableReader r(*t, file_, "scene");
+        TomlTableReader r(*t, file_, "scene", units());
         model_.name = r.string("name");
         if (model_.name.empty() || model_.name.size() > 64 ||
             !std::all_of(model_.name.begin(), model_.name.end(), [](char c) {
@@ -89,21 +90,38 @@ private:
         r.finish({"name", "title"});
     }
 
+    // [units]: the scene's length and force; numbers may then be written with units.
+    void read_units(TomlTableReader& top) {
+        const toml::table* t = top.table("units");
+        if (!t) return;
+        TomlTableReader r(*t, file_, "units");
+        const std::string length = r.string("length"), force = r.string("force");
+        try {
+            units_.emplace(length, force);
+        } catch (const UnitError& e) {
+            r.fail(std::string(e.what()).find("length") != std::string::npos ? "length" : "force", e.what());
+        }
+        r.finish({"length", "force"});
+        model_.report.length_unit = length;
+        model_.report.force_unit = force;
+    }
+    const UnitSystem* units() const { return units_ ? &*units_ : nullptr; }
+
     void read_materials(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "material");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("material", i));
+            TomlTableReader r(*list[i].first, file_, indexed("material", i), units());
             const std::string name = r.string("name");
             if (materials_.count(name)) r.fail("name", "a material named '" + name + "' exists already");
             Material m;
-            m.E = r.positive("E");
-            m.density = r.number_or("density", 0.0);
+            m.E = r.positive("E", dimension::stress);
+            m.density = r.number_or("density", 0.0, dimension::mass_density);
             if (m.density < 0.0) r.fail("density", "expected a density of at least 0");
             std::vector<std::string> keys{"name", "E", "fy", "ultimate_strain", "density", "law"};
             if (r.has("fy")) {
                 SteelSpec s;
                 s.E = m.E;
-                s.fy = r.positive("fy");
+                s.fy = r.positive("fy", dimension::stress);
                 s.ultimate_strain = r.number_or("ultimate_strain", 0.0);
                 if (s.ultimate_strain < 0.0 || (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E))
                     r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
@@ -138,7 +156,7 @@ private:
     void read_sections(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "section");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("section", i));
+            TomlTableReader r(*list[i].first, file_, indexed("section", i), units());
             const std::string name = r.string("name");
             if (section_index_.count(name)) r.fail("name", "a section named '" + name + "' exists already");
             const std::string material = r.string("material");
@@ -224,10 +242,10 @@ private:
     void read_nodes(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "node");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("node", i));
+            TomlTableReader r(*list[i].first, file_, indexed("node", i), units());
             const int id = r.integer("id", 0, 1'000'000'000);
             if (node_ids_.count(id)) r.fail("id", "node id " + std::to_string(id) + " is used twice");
-            const double x = r.number("x"), y = r.number("y");
+            const double x = r.number("x", dimension::length), y = r.number("y", dimension::length);
             if (const int k = node_index_.find(x, y, merge_tolerance(x, y)); k >= 0)
                 for (const auto& [other, index] : node_ids_)
                     if (index == k) r.fail("id", "node " + std::to_string(id) + " lies on node " + std::to_string(other));
@@ -269,10 +287,10 @@ private:
     void read_lines(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "line");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("line", i));
+            TomlTableReader r(*list[i].first, file_, indexed("line", i), units());
             const std::string name = r.string_or("name", "line" + std::to_string(i + 1));
-            const auto a = r.point("start");
-            const auto b = r.point("end");
+            const auto a = r.point("start", dimension::length);
+            const auto b = r.point("end", dimension::length);
             const int n = r.integer("elements", 1, max_elements);
             const int section = section_of(r);
             if (std::hypot(b[0] - a[0], b[1] - a[1]) <= 0.0) r.fail("end", "a line needs a positive length (start and end coincide)");
@@ -287,10 +305,10 @@ private:
     void read_arcs(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "arc");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("arc", i));
+            TomlTableReader r(*list[i].first, file_, indexed("arc", i), units());
             const std::string name = r.string_or("name", "arc" + std::to_string(i + 1));
-            const auto c = r.point("center");
-            const double R = r.positive("radius");
+            const auto c = r.point("center", dimension::length);
+            const double R = r.positive("radius", dimension::length);
             const double a0 = r.number("start_angle");
             const double a1 = r.number("end_angle");
             const int n = r.integer("elements", 1, max_elements);
@@ -314,7 +332,7 @@ private:
     void read_elements(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "element");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("element", i));
+            TomlTableReader r(*list[i].first, file_, indexed("element", i), units());
             const toml::array* a = r.array("nodes");
             if (!a || a->size() != 2 || !(*a)[0].is_integer() || !(*a)[1].is_integer())
                 r.fail("nodes", "expected two node ids, e.g. nodes = [1, 2]");
@@ -346,7 +364,7 @@ private:
         if (r.has(id_key) && r.has(at_key)) r.fail(at_key, "give either '" + id_key + "' or '" + at_key + "', not both");
         if (r.has(id_key)) return node_by_id(r, id_key, r.integer(id_key, 0, 1'000'000'000));
         if (!r.has(at_key)) r.fail("", "missing '" + at_key + "' (a point [x, y]) or '" + id_key + "' (a node id)");
-        const auto p = r.point(at_key);
+        const auto p = r.point(at_key, dimension::length);
         return node_at(r, at_key, p);
     }
     int node_at(TomlTableReader& r, const std::string& key, const std::array<double, 2>& p) {
@@ -400,10 +418,13 @@ private:
         r.fail(key, "expected 'ux', 'uy' or 'rz', got '" + name + "'");
     }
 
+    // A controlled displacement is a length, or a rotation in radians (a pure number).
+    static Dimension control_dimension(const DofRef& c) { return c.dof == 2 ? dimension::none : dimension::length; }
+
     void read_supports(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "support");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("support", i));
+            TomlTableReader r(*list[i].first, file_, indexed("support", i), units());
             Support s;
             s.node = node_ref(r);
             const toml::array* fix = r.array("fix");
@@ -420,10 +441,11 @@ private:
     void read_loads(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "load");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("load", i));
+            TomlTableReader r(*list[i].first, file_, indexed("load", i), units());
             NodalLoad l;
             l.node = node_ref(r);
-            l.value = {r.number_or("fx", 0.0), r.number_or("fy", 0.0), r.number_or("moment", 0.0)};
+            l.value = {r.number_or("fx", 0.0, dimension::force), r.number_or("fy", 0.0, dimension::force),
+                       r.number_or("moment", 0.0, dimension::moment)};
             l.pattern = pattern_of(r);
             if (l.value[0] == 0.0 && l.value[1] == 0.0 && l.value[2] == 0.0)
                 r.fail("", "a load needs a non-zero 'fx', 'fy' or 'moment'");
@@ -442,7 +464,7 @@ private:
         nodal_loads_ = static_cast<int>(model_.loads.size());
         const Tables list = array_of_tables(top, "distributed_load");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("distributed_load", i));
+            TomlTableReader r(*list[i].first, file_, indexed("distributed_load", i), units());
             const std::string on = r.string("on");
             std::vector<int> elements;
             if (on == "all") {
@@ -452,11 +474,11 @@ private:
                 if (g == member_elements_.end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
                 elements = g->second;
             }
-            const double wx = r.number_or("wx", 0.0), wy = r.number_or("wy", 0.0);
-            const double pressure = r.number_or("pressure", 0.0);
+            const double wx = r.number_or("wx", 0.0, dimension::force_per_length), wy = r.number_or("wy", 0.0, dimension::force_per_length);
+            const double pressure = r.number_or("pressure", 0.0, dimension::force_per_length); // per unit length of member
             std::array<double, 2> gravity{0.0, 0.0};
             if (r.has("gravity")) {
-                gravity = r.point("gravity");
+                gravity = r.point("gravity", dimension::acceleration);
                 for (int e : elements)
                     if (model_.sections[model_.elements[e].section].mass_per_length <= 0.0)
                         r.fail("gravity", "self weight needs the material's 'density' (section '" +
@@ -489,11 +511,11 @@ private:
     void read_prescribed(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "prescribed");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("prescribed", i));
+            TomlTableReader r(*list[i].first, file_, indexed("prescribed", i), units());
             PrescribedDisplacement p;
             p.node = node_ref(r);
             p.dof = dof_index(r, "dof", r.string("dof"));
-            p.value = r.number("value");
+            p.value = r.number("value", p.dof == 2 ? dimension::none : dimension::length); // a rotation in radians
             p.pattern = pattern_of(r);
             if (supported(p.node, p.dof))
                 r.fail("dof", "this DOF is also supported ([[support]] fix): a prescribed displacement replaces the support there; remove it from 'fix'");
@@ -505,7 +527,7 @@ private:
     void read_foundations(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "foundation");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("foundation", i));
+            TomlTableReader r(*list[i].first, file_, indexed("foundation", i), units());
             const std::string kind = r.choice("kind", {"unilateral", "bilateral", "tensionless"}, "bilateral");
             const bool unilateral = kind == "unilateral", tensionless = kind == "tensionless";
             std::vector<int> nodes;
@@ -522,14 +544,13 @@ private:
             if (const toml::array* a = r.array("at")) {
                 for (const toml::node& p : *a) {
                     const toml::array* xy = p.as_array();
-                    if (!xy || xy->size() != 2 || !(*xy)[0].is_number() || !(*xy)[1].is_number())
-                        r.fail("at", "expected a list of points [[x, y], …]");
-                    nodes.push_back(node_at(r, "at", {*(*xy)[0].value<double>(), *(*xy)[1].value<double>()}));
+                    if (!xy) r.fail("at", "expected a list of points [[x, y], …]");
+                    nodes.push_back(node_at(r, "at", r.point_in(p, "at", dimension::length)));
                 }
             }
             if (r.has("below")) {
                 // Keeps only the selected nodes whose initial height is at most this value.
-                const double limit = r.number("below");
+                const double limit = r.number("below", dimension::length);
                 if (nodes.empty()) r.fail("below", "'below' filters the nodes chosen by 'on' or 'at'");
                 std::vector<int> kept;
                 for (int n : nodes)
@@ -542,12 +563,16 @@ private:
             if (const toml::array* a = r.array("halve_at")) {
                 for (const toml::node& p : *a) {
                     const toml::array* xy = p.as_array();
-                    if (!xy || xy->size() != 2 || !(*xy)[0].is_number() || !(*xy)[1].is_number())
-                        r.fail("halve_at", "expected a list of points [[x, y], …]");
-                    scale[node_at(r, "halve_at", {*(*xy)[0].value<double>(), *(*xy)[1].value<double>()})] = 0.5;
+                    if (!xy) r.fail("halve_at", "expected a list of points [[x, y], …]");
+                    scale[node_at(r, "halve_at", r.point_in(p, "halve_at", dimension::length))] = 0.5;
                 }
             }
-            const double kx = r.number_or("kx", 0.0), ky = r.number_or("ky", 0.0), kr = r.number_or("krot", 0.0);
+            // Springs at nodes (force per length, moment per radian) or per unit length of member.
+            const bool per_length = r.boolean_or("per_length", false);
+            const Dimension k_dimension = per_length ? dimension::stress : dimension::force_per_length;
+            const Dimension krot_dimension = per_length ? dimension::force : dimension::moment;
+            const double kx = r.number_or("kx", 0.0, k_dimension), ky = r.number_or("ky", 0.0, k_dimension);
+            const double kr = r.number_or("krot", 0.0, krot_dimension);
             for (const auto& [key, v] : {std::pair{"kx", kx}, std::pair{"ky", ky}, std::pair{"krot", kr}})
                 if (v < 0.0) r.fail(key, "expected a stiffness ≥ 0");
             if (unilateral && !(ky > 0.0)) r.fail("ky", "a unilateral base needs a positive normal stiffness 'ky'");
@@ -557,7 +582,6 @@ private:
             if (!tensionless && r.has("direction"))
                 r.fail("direction", "a direction belongs to a tensionless bed (kind = \"tensionless\")");
             if (!unilateral && kx == 0.0 && ky == 0.0 && kr == 0.0) r.fail("ky", "a foundation needs a positive kx, ky or krot");
-            const bool per_length = r.boolean_or("per_length", false);
             std::vector<double> tributary(model_.nodes.size(), 1.0);
             if (per_length) {
                 std::fill(tributary.begin(), tributary.end(), 0.0);
@@ -573,13 +597,13 @@ private:
                 BaseLine base;
                 double lowest = 1e300;
                 for (int n : nodes) lowest = std::min(lowest, model_.nodes[n].y);
-                base.point = r.has("base_point") ? r.point("base_point") : std::array<double, 2>{0.0, lowest};
+                base.point = r.has("base_point") ? r.point("base_point", dimension::length) : std::array<double, 2>{0.0, lowest};
                 base.normal = r.has("base_normal") ? r.point("base_normal") : std::array<double, 2>{0.0, 1.0};
                 const double nn = std::hypot(base.normal[0], base.normal[1]);
                 if (!(nn > 0.0)) r.fail("base_normal", "expected a non-zero vector");
                 base.normal = {base.normal[0] / nn, base.normal[1] / nn};
                 // A platen: the base moves by λ·base_motion (the load factor drives it).
-                if (r.has("base_motion")) base.motion = r.point("base_motion");
+                if (r.has("base_motion")) base.motion = r.point("base_motion", dimension::length);
                 if (r.has("pattern") && !base.moves()) r.fail("pattern", "a pattern drives a moving base ('base_motion')");
                 if (base.moves()) base.pattern = pattern_of(r);
                 // Foundations on the same line share it; another line is another base.
@@ -652,7 +676,7 @@ private:
         const Tables list = array_of_tables(top, "stage");
         const AnalysisSpec& a = model_.analysis;
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("stage", i));
+            TomlTableReader r(*list[i].first, file_, indexed("stage", i), units());
             StageSpec s;
             s.pattern = driven_pattern(r);
             s.control = model_.stages.empty() ? a.control : model_.stages.back().control;
@@ -664,12 +688,13 @@ private:
             }
             const std::string scheme = r.choice("scheme", {"load_control", "displacement_control"}, "load_control");
             s.scheme = scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
-            s.increment = r.positive("increment");
+            const Dimension controlled = control_dimension(s.control);
+            s.increment = r.positive("increment", s.scheme == Scheme::displacement_control ? controlled : dimension::none);
             s.adaptive = r.boolean_or("adaptive", false);
             if (r.has("target_load_factor") && r.has("target_displacement"))
                 r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");
             if (r.has("target_load_factor")) s.target_load_factor = r.number("target_load_factor");
-            if (r.has("target_displacement")) s.target_displacement = r.number("target_displacement");
+            if (r.has("target_displacement")) s.target_displacement = r.number("target_displacement", controlled);
             if (!s.target_load_factor && !s.target_displacement)
                 r.fail("", "missing a stop: 'target_load_factor' or 'target_displacement'");
             if (s.scheme == Scheme::load_control && s.target_displacement)
@@ -724,14 +749,17 @@ private:
     void read_analysis(TomlTableReader& top) {
         const toml::table* t = top.table("analysis");
         if (!t) top.fail("", "missing required table [analysis]");
-        TomlTableReader r(*t, file_, "analysis");
+        TomlTableReader r(*t, file_, "analysis", units());
         AnalysisSpec& a = model_.analysis;
         const std::string scheme = r.choice("scheme", {"arc_length", "load_control", "displacement_control"}, "arc_length");
         a.scheme = scheme == "arc_length" ? Scheme::arc_length
                  : scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
-        a.initial_increment = r.positive("increment");
-        a.min_increment = r.positive_or("min_increment", a.initial_increment * 1e-6);
-        a.max_increment = r.positive_or("max_increment", 0.0 + a.initial_increment * 10.0);
+        // Displacement control steps the controlled DOF; load control and arc length step λ.
+        const Dimension controlled = r.has("control_dof") && r.string("control_dof") == "rz" ? dimension::none : dimension::length;
+        const Dimension step = a.scheme == Scheme::displacement_control ? controlled : dimension::none;
+        a.initial_increment = r.positive("increment", step);
+        a.min_increment = r.positive_or("min_increment", a.initial_increment * 1e-6, step);
+        a.max_increment = r.positive_or("max_increment", 0.0 + a.initial_increment * 10.0, step);
         a.adaptive = r.boolean_or("adaptive", a.scheme != Scheme::load_control);
         // Fibre branches along a member settle in about three extra iterations at any step
         // size (Newton freezes them from its third iteration): a plastic zone asks for more.
@@ -750,7 +778,7 @@ private:
             r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");
         if (r.has("target_load_factor"))
             a.target_load_factor = r.positive("target_load_factor"); // a load the other way: reverse the [[load]]
-        if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement");
+        if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement", controlled);
         a.pattern = driven_pattern(r);
         if (r.has("control_at") || r.has("control_node")) {
             a.control = read_control(r, a.pattern);
@@ -827,7 +855,7 @@ private:
             model_.report.load_label = "pressure";
         }
         if (!t) return;
-        TomlTableReader r(*t, file_, "report");
+        TomlTableReader r(*t, file_, "report", units());
         if (r.has("load")) {
             const std::string measure = r.choice("load", {"total", "factor"}, "total");
             if (measure == "total" && !parallel)
@@ -843,9 +871,9 @@ private:
         model_.report.load_label = r.string_or("load_label", model_.report.load_label);
         model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
         model_.report.exact = r.string_or("exact", "");
-        if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x");
+        if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x", dimension::length);
         for (const auto& [key, unit] : {std::pair{"length_unit", &model_.report.length_unit}, std::pair{"force_unit", &model_.report.force_unit}}) {
-            *unit = r.string_or(key, "");
+            *unit = r.string_or(key, *unit); // [units] names them unless [report] relabels
             if (unit->size() > 16 || unit->find_first_of("\n\r\t") != std::string::npos)
                 r.fail(key, "expected a short unit name such as \"mm\" or \"kN\"");
         }
@@ -892,6 +920,7 @@ private:
     const toml::table& root_;
     std::string file_;
     Model model_;
+    std::optional<UnitSystem> units_;
     std::map<std::string, Material> materials_;
     std::map<std::string, int> section_index_;
     NodeIndex node_index_;

@@ -23,8 +23,8 @@ namespace {
 SectionSpec properties(TomlTableReader& t, const ShapeMaterial& m) {
     SectionSpec s;
     s.E = m.E;
-    s.area = t.positive("A");
-    s.inertia = t.positive("I");
+    s.area = t.positive("A", dimension::area);
+    s.inertia = t.positive("I", dimension::second_moment);
     if (m.steel) {
         // A and I alone define no fibres: an equivalent rectangle carries them.
         const double h = std::sqrt(12.0 * s.inertia / s.area);
@@ -34,18 +34,18 @@ SectionSpec properties(TomlTableReader& t, const ShapeMaterial& m) {
 }
 
 SectionSpec rectangle(TomlTableReader& t, const ShapeMaterial& m) {
-    const double b = t.positive("b");
-    const double h = t.positive("h");
+    const double b = t.positive("b", dimension::length);
+    const double h = t.positive("h", dimension::length);
     return rectangle_section(m.E, b, h, t.integer_or("fibres", 10, 1, 100000));
 }
 
 // I or H section: flanges split into strips across the width and layers through the
 // thickness (so a residual-stress pattern across the flange is represented), web in layers.
 SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
-    const double d = t.positive("depth");
-    const double bf = t.positive("flange_width");
-    const double tf = t.positive("flange_thickness");
-    const double tw = t.positive("web_thickness");
+    const double d = t.positive("depth", dimension::length);
+    const double bf = t.positive("flange_width", dimension::length);
+    const double tf = t.positive("flange_thickness", dimension::length);
+    const double tw = t.positive("web_thickness", dimension::length);
     if (2.0 * tf >= d) t.fail("flange_thickness", "two flanges must be thinner than the depth");
     if (tw > bf) t.fail("web_thickness", "the web must not be wider than the flanges");
     const int strips = t.integer_or("flange_strips", 10, 1, 1000);
@@ -76,8 +76,8 @@ SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
 }
 
 SectionSpec hollow_circle(TomlTableReader& t, const ShapeMaterial& m) {
-    const double D = t.positive("diameter");
-    const double th = t.positive("thickness");
+    const double D = t.positive("diameter", dimension::length);
+    const double th = t.positive("thickness", dimension::length);
     if (2.0 * th > D) t.fail("thickness", "expected at most half the diameter");
     const int n = t.integer_or("fibres", 24, 4, 100000);
     SectionSpec s;

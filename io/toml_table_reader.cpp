@@ -38,9 +38,9 @@ std::string nearest_key(const std::string& key, const std::vector<std::string>& 
     return best;
 }
 
-TomlTableReader::TomlTableReader(const toml::table& table, std::string file, std::string path)
+TomlTableReader::TomlTableReader(const toml::table& table, std::string file, std::string path, const UnitSystem* units)
     : table_(table), file_(std::move(file)), path_(std::move(path)),
-      line_(plastica::line_of(static_cast<const toml::node&>(table))) {}
+      line_(plastica::line_of(static_cast<const toml::node&>(table))), units_(units) {}
 
 bool TomlTableReader::has(const std::string& key) const { return table_.contains(key); }
 
@@ -62,17 +62,36 @@ const toml::node* TomlTableReader::node(const std::string& key) {
     return table_.get(key);
 }
 
-double TomlTableReader::number(const std::string& key) {
+std::optional<double> TomlTableReader::value_of(const toml::node& n, const std::string& key, Dimension d) const {
+    if (n.is_number()) return n.value<double>();
+    if (!n.is_string()) return std::nullopt;
+    const std::string text = *n.value<std::string>();
+    const auto fail_here = [&](const std::string& what) -> void {
+        throw SceneError(file_, plastica::line_of(n), qualified(key), what);
+    };
+    if (d == dimension::none) fail_here("expected a number: this value is a pure number, without a unit");
+    if (!units_)
+        fail_here("\"" + text + "\" is a string: a value with a unit needs a [units] table naming the scene's units "
+                  "(e.g. [units] length = \"m\", force = \"kN\"); without one, write a number");
+    try {
+        return units_->to_scene(text, d);
+    } catch (const UnitError& e) {
+        fail_here(e.what());
+    }
+    return std::nullopt;
+}
+
+double TomlTableReader::number(const std::string& key, Dimension d) {
     const toml::node* n = node(key);
     if (!n) fail("", "missing required key '" + key + "' (a number)");
-    std::optional<double> v = n->value<double>();
-    if (!v || !(n->is_number())) fail(key, "expected a number");
+    const std::optional<double> v = value_of(*n, key, d);
+    if (!v) fail(key, d == dimension::none || !units_ ? "expected a number" : "expected a number, or a string with its unit");
     if (!std::isfinite(*v)) fail(key, "expected a finite number, got " + std::to_string(*v));
     return *v;
 }
 
-double TomlTableReader::positive(const std::string& key) {
-    const double v = number(key);
+double TomlTableReader::positive(const std::string& key, Dimension d) {
+    const double v = number(key, d);
     if (!(v > 0.0)) {
         std::ostringstream s;
         s << "expected a positive number, got " << v;
@@ -81,20 +100,20 @@ double TomlTableReader::positive(const std::string& key) {
     return v;
 }
 
-std::optional<double> TomlTableReader::optional_number(const std::string& key) {
+std::optional<double> TomlTableReader::optional_number(const std::string& key, Dimension d) {
     if (!has(key)) {
         used_.insert(key);
         return std::nullopt;
     }
-    return number(key);
+    return number(key, d);
 }
 
-double TomlTableReader::number_or(const std::string& key, double fallback) {
-    return has(key) ? number(key) : (used_.insert(key), fallback);
+double TomlTableReader::number_or(const std::string& key, double fallback, Dimension d) {
+    return has(key) ? number(key, d) : (used_.insert(key), fallback);
 }
 
-double TomlTableReader::positive_or(const std::string& key, double fallback) {
-    return has(key) ? positive(key) : (used_.insert(key), fallback);
+double TomlTableReader::positive_or(const std::string& key, double fallback, Dimension d) {
+    return has(key) ? positive(key, d) : (used_.insert(key), fallback);
 }
 
 int TomlTableReader::integer(const std::string& key, int min, int max) {
@@ -149,15 +168,21 @@ std::string TomlTableReader::choice(const std::string& key, const std::vector<st
     fail(key, "expected one of " + list + ", got '" + v + "'");
 }
 
-std::array<double, 2> TomlTableReader::point(const std::string& key) {
+std::array<double, 2> TomlTableReader::point(const std::string& key, Dimension d) {
     const toml::node* n = node(key);
     if (!n) fail("", "missing required key '" + key + "' (a point [x, y])");
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
-        fail(key, "expected a point [x, y] of two numbers");
-    std::array<double, 2> p{*(*a)[0].value<double>(), *(*a)[1].value<double>()};
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1])) fail(key, "expected finite coordinates");
-    return p;
+    return point_in(*n, key, d);
+}
+
+std::array<double, 2> TomlTableReader::point_in(const toml::node& item, const std::string& key, Dimension d) const {
+    const toml::array* a = item.as_array();
+    std::optional<double> x, y;
+    if (a && a->size() == 2) x = value_of((*a)[0], key, d), y = value_of((*a)[1], key, d);
+    if (!x || !y)
+        throw SceneError(file_, plastica::line_of(item), qualified(key),
+                         std::string("expected a point [x, y] of two numbers") + (units_ && d != dimension::none ? " (or strings with units)" : ""));
+    if (!std::isfinite(*x) || !std::isfinite(*y)) throw SceneError(file_, plastica::line_of(item), qualified(key), "expected finite coordinates");
+    return {*x, *y};
 }
 
 const toml::table* TomlTableReader::table(const std::string& key) {

@@ -119,9 +119,6 @@ StudyReport run_study(const StudyOptions& options) {
     const std::vector<std::string> methods = compared ? options.methods : std::vector<std::string>{""};
     for (const Ladder& ladder : options.ladders) {
         if (ladder.levels.size() < 2) throw StudyError("--vary " + ladder.parameter + " needs at least two levels");
-        if (extrapolated && ladder.levels.size() < 3)
-            throw StudyError("--vary " + ladder.parameter + ": a limit is extrapolated from three levels or more; give a third level, "
-                             "or --reference finest|exact|FILE");
         std::vector<double> hs;
         for (double level : ladder.levels) hs.push_back(step_size(ladder.parameter, level));
         const std::size_t finest = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
@@ -132,6 +129,9 @@ StudyReport run_study(const StudyOptions& options) {
             runs.emplace_back();
             for (double level : ladder.levels)
                 runs.back().push_back(solve(scene_variant(options.scene, ladder.parameter, level, method), options.min_seconds));
+            if (extrapolated && ladder.levels.size() < 3)
+                throw StudyError("--vary " + ladder.parameter + ": a limit is extrapolated from three levels or more; give a third level, "
+                                 "or --reference finest|exact|FILE");
             if (ladder.levels.size() >= 3) {
                 std::vector<Curve> curves;
                 for (const Solved& run : runs.back()) curves.push_back(run.curve);

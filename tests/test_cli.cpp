@@ -791,6 +791,27 @@ TEST_CASE("The report names the first yield and the peak among its key frames wh
     CHECK(run["model"]["load_patterns"][0]["sum_fx"].get<double>() == Approx(35.0));
 }
 
+TEST_CASE("A scene with [units] carries them into run.json and the VTU and its report page heads", "[cli][units]") {
+    const fs::path out = scratch("units");
+    REQUIRE(command("run " + std::string(PLASTICA_SOURCE_DIR) + "/tests/frames/portal_in_millimetres.toml -o " + out.string() +
+                    " --no-render -q")
+                .code == 0);
+    REQUIRE(command("report " + out.string()).code == 0);
+    const nlohmann::json run = read_json(out / "run.json");
+    CHECK(run["model"]["units"]["length"] == "mm");
+    CHECK(run["model"]["units"]["force"] == "kN");
+    // 210 GPa = 210 kN/mm²; the HEB 200's M_p(0) 220.1 kN·m in kN·mm; its peak is the portal's in metres.
+    CHECK(run["model"]["sections"][0]["E"].get<double>() == Approx(210.0));
+    CHECK(run["model"]["sections"][0]["plastic_moment"].get<double>() == Approx(220108.9).epsilon(1e-5));
+    CHECK(run["peak"]["load"].get<double>() == Approx(1.79834).epsilon(1e-5));
+    std::ifstream in(out / "report.html");
+    const std::string page((std::istreambuf_iterator<char>(in)), {});
+    CHECK_THAT(page, Catch::Contains("E (kN/mm²)") && Catch::Contains("M_p at N = 0 (kN·mm)"));
+    std::ifstream step(out / "vtu" / "step_000010.vtu");
+    const std::string vtu((std::istreambuf_iterator<char>(step)), {});
+    CHECK_THAT(vtu, Catch::Contains("Name=\"length_unit\""));
+}
+
 TEST_CASE("Likely unit mistakes are warned of on stderr and in run.json, and the run goes on", "[cli][warnings]") {
     // fy in MPa beside E in kN/m² (fy/E = 1.7e-6), and a section 200 deep on a frame in metres.
     const fs::path dir = scratch("warnings");
