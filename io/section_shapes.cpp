@@ -40,7 +40,9 @@ SectionSpec rectangle(TomlTableReader& t, const ShapeMaterial& m) {
 }
 
 // I or H section: flanges split into strips across the width and layers through the
-// thickness (so a residual-stress pattern across the flange is represented), web in layers.
+// thickness (so a residual-stress pattern across the flange is represented), web in layers,
+// and with a root radius r the four fillets between web and flanges, each (1 − π/4)·r² with its
+// centroid 0.2234·r from the flange (a rolled section's tabulated A, I and W_pl).
 SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
     const double d = t.positive("depth", dimension::length);
     const double bf = t.positive("flange_width", dimension::length);
@@ -54,10 +56,15 @@ SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
     const double ratio = t.number_or("residual_stress", 0.0);
     if (ratio < 0.0 || ratio >= 1.0) t.fail("residual_stress", "expected a fraction of fy in [0, 1)");
     const double hw = d - 2.0 * tf;
+    const double r = t.number_or("root_radius", 0.0, dimension::length);
+    if (r < 0.0 || 2.0 * r > hw || tw + 2.0 * r > bf)
+        t.fail("root_radius", "expected a radius ≥ 0 whose fillets fit between the flanges and within their width");
+    const double fillet_area = (1.0 - M_PI / 4.0) * r * r, fillet_y = hw / 2.0 - 0.2234 * r;
+    const double fillet_own_inertia = 0.0075 * r * r * r * r; // a spandrel's about its own centroid
     SectionSpec s;
     s.E = m.E;
-    s.area = 2.0 * bf * tf + hw * tw;
-    s.inertia = (bf * d * d * d - (bf - tw) * hw * hw * hw) / 12.0;
+    s.area = 2.0 * bf * tf + hw * tw + 4.0 * fillet_area;
+    s.inertia = (bf * d * d * d - (bf - tw) * hw * hw * hw) / 12.0 + 4.0 * (fillet_area * fillet_y * fillet_y + fillet_own_inertia);
     const double fy = m.steel ? m.steel->fy : 0.0;
     for (int side : {-1, 1})
         for (int l = 0; l < layers; ++l) {
@@ -72,6 +79,8 @@ SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
         }
     for (int k = 0; k < web; ++k)
         s.fibres.push_back({hw * tw / web, -hw / 2.0 + (k + 0.5) * hw / web, 0.0});
+    if (r > 0.0)
+        for (int side : {-1, 1}) s.fibres.push_back({2.0 * fillet_area, side * fillet_y, 0.0});
     return s;
 }
 
@@ -126,7 +135,7 @@ const std::vector<SectionShape>& section_shapes() {
         {"properties", {"A", "I", "fibres"}, properties},
         {"rectangle", {"b", "h", "fibres"}, rectangle},
         {"i", {"depth", "flange_width", "flange_thickness", "web_thickness", "flange_strips", "flange_layers", "web_fibres",
-               "residual_stress"}, i_section},
+               "residual_stress", "root_radius"}, i_section},
         {"hollow_circle", {"diameter", "thickness", "fibres"}, hollow_circle},
         {"fibres", {"fibres"}, explicit_fibres},
     };

@@ -172,3 +172,72 @@ TEST_CASE("Residual stresses lower the first-yield moment but not the plastic ca
     const double early_without = plain.moment_curvature(0.0, 1.2 * kappa_y, 12).back().moment;
     CHECK(early_with < 0.99 * early_without);
 }
+
+TEST_CASE("I section with its root radius: the tabulated A and W_pl of rolled HEB and IPE sections", "[section]") {
+    // Euronorm 53-62 and 19-57 section tables (ArcelorMittal, "Sales programme: sections and
+    // merchant bars", 2021): HEB 200 A = 78.08 cm², W_pl = 642.5 cm³, I = 5696 cm⁴ (r = 18);
+    // IPE 300 A = 53.81 cm², W_pl = 628.4 cm³, I = 8356 cm⁴ (r = 15). The tables round to the
+    // digits shown; the fillets' centroid (0.2234 r) to 1e-4 r.
+    const char* scene = R"([scene]
+name = "sections"
+[[material]]
+name = "S235"
+E = 210000.0
+fy = 235.0
+[[section]]
+name = "HEB200"
+material = "S235"
+shape = "i"
+depth = 200.0
+flange_width = 200.0
+flange_thickness = 15.0
+web_thickness = 9.0
+root_radius = 18.0
+web_fibres = 100
+[[section]]
+name = "IPE300"
+material = "S235"
+shape = "i"
+depth = 300.0
+flange_width = 150.0
+flange_thickness = 10.7
+web_thickness = 7.1
+root_radius = 15.0
+web_fibres = 100
+[[line]]
+start = [0.0, 0.0]
+end = [4000.0, 0.0]
+elements = 1
+section = "HEB200"
+[[line]]
+start = [4000.0, 0.0]
+end = [8000.0, 0.0]
+elements = 1
+section = "IPE300"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[load]]
+at = [8000.0, 0.0]
+fy = -1.0
+[analysis]
+scheme = "load_control"
+increment = 1.0
+target_load_factor = 1.0
+)";
+    const Model m = read_scene_text(scene, "sections.toml");
+    struct Table {
+        double area, plastic_modulus, inertia;
+    };
+    const Table tables[] = {{7808.0, 642.5e3, 56.96e6}, {5381.0, 628.4e3, 83.56e6}};
+    for (int k = 0; k < 2; ++k) {
+        CAPTURE(k);
+        const SectionSpec& s = m.sections[static_cast<std::size_t>(k)];
+        const FibreSection f(s);
+        CHECK(s.area == Approx(tables[k].area).epsilon(5e-4));
+        CHECK(s.inertia == Approx(tables[k].inertia).epsilon(1e-3));
+        CHECK(f.axial_capacity_tension() == Approx(235.0 * tables[k].area).epsilon(5e-4));
+        // Web layers of hw/100: the plastic neutral axis within half a layer of the centroid.
+        CHECK(f.moment_capacity(0.0, 1.0) == Approx(235.0 * tables[k].plastic_modulus).epsilon(1e-3));
+    }
+}
