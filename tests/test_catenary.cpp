@@ -1,5 +1,5 @@
 // Catenary action of a clamped beam against rigid–perfectly-plastic theory (Haythornthwaite
-// 1957; Jones, Structural Impact, 1989; BENCHMARKS.md §6): the stress-resultant hinges must
+// 1957; Jones, Structural Impact, 1989): the stress-resultant hinges must
 // carry the axial force up to the squash load, never beyond, and turn into a plastic string.
 #include "analysis_helpers.hpp"
 #include "element/plastic_hinge_law.hpp"

@@ -1,5 +1,5 @@
-// Large-displacement elastic verification against exact and published values
-// (BENCHMARKS.md §1): the cantilever rolled into circles, Mattiasson's elastica, the Euler
+// Large-displacement elastic verification against exact and published values (docs/verification.md
+// lists them with their sources): the cantilever rolled into circles, Mattiasson's elastica, the Euler
 // column and its post-buckled elastica, Lee's frame and DaDeppo & Schmidt's deep arch.
 #include "analysis_helpers.hpp"
 

@@ -1,4 +1,5 @@
-// Foundation springs and unilateral contact against closed forms (BENCHMARKS.md §3) and the
+// Foundation springs and unilateral contact against closed forms (Hetényi, "Beams on Elastic
+// Foundation", 1946; Timoshenko, "Strength of Materials II", 1956) and the
 // ring scenes: Hetényi's beam on a Winkler foundation, the tensionless foundation, the
 // pinched ring at small load, penalty convergence, equilibrium of contact forces, symmetry.
 #include "analysis_helpers.hpp"
@@ -76,7 +77,7 @@ std::string unilateral(double ky) {
 } // namespace
 
 TEST_CASE("A beam on a Winkler foundation matches Hetényi's closed form as the springs refine", "[foundation]") {
-    // βL = 4: w_c = 0.134994 P β/k·(k=4 → per unit P), M_c = 0.263462 P/β (BENCHMARKS.md §3.1).
+    // βL = 4: w_c = 0.134994 P β/k·(k=4 → per unit P), M_c = 0.263462 P/β (Hetényi 1946).
     const double P = 1e-4;
     double previous = 1.0;
     for (int n : {20, 40, 80}) {
@@ -94,7 +95,7 @@ TEST_CASE("A beam on a Winkler foundation matches Hetényi's closed form as the 
 }
 
 TEST_CASE("A tensionless foundation lifts off beyond a = π/2β and deflects 1.0903 × the bilateral value", "[foundation][contact]") {
-    // βL = 10, s = 0.1: w0 = coth(π/2)·Pβ/2k = 0.136291·P, contact |x| ≤ π/2β (BENCHMARKS.md §3.2).
+    // βL = 10, s = 0.1: w0 = coth(π/2)·Pβ/2k = 0.136291·P, contact |x| ≤ π/2β (Tsai & Westmann, "Beam on tensionless foundation", J. Eng. Mech. Div. 93, 1967).
     // Both ways to model it: springs against a rigid base line through the beam's axis, and a
     // tensionless bed anchored at each node's initial position.
     const std::string kind = GENERATE(as<std::string>{}, "unilateral", "tensionless");

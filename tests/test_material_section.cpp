@@ -1,4 +1,5 @@
-// Material point and section tests against exact values (BENCHMARKS.md §2.1).
+// Material point and section tests against exact values (Neal 1977; Chen & Atsuta, "Theory of
+// Beam-Columns", 1976).
 #include "material/bilinear_steel.hpp"
 #include "scene_reader.hpp"
 #include "section/fibre_section.hpp"
@@ -115,7 +116,7 @@ TEST_CASE("SCM: Newton finds the deformation carrying (N, M) and the tangents EA
 }
 
 namespace {
-// I section without fillets: closed-form plastic interaction (BENCHMARKS.md §2.1).
+// I section without fillets: closed-form plastic interaction (Chen & Atsuta 1976).
 double i_section_mpc(double d, double bf, double tf, double tw, double N) {
     const double hw = d - 2 * tf;
     if (N <= fy * tw * hw) return fy * (bf * tf * (d - tf) + tw * hw * hw / 4.0) - N * N / (4.0 * fy * tw);

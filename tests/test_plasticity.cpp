@@ -1,4 +1,5 @@
-// Refined plastic hinges against plastic theory (BENCHMARKS.md §2.2): collapse loads of
+// Refined plastic hinges against plastic theory (Neal, "The Plastic Methods of Structural
+// Analysis", 1977; Liew, White & Chen, J. Struct. Eng. 119(11), 1993): collapse loads of
 // beams and a portal frame, elastic unloading, and the inelastic ring of the seed.
 #include "analysis_helpers.hpp"
 #include "scene_overrides.hpp"

@@ -23,7 +23,8 @@ std::string model(const std::string& name) { return std::string(PLASTICA_SOURCE_
 } // namespace
 
 TEST_CASE("The exact elastica reproduces Mattiasson's table to its five digits", "[study][elastica]") {
-    // BENCHMARKS.md §1: α = PL²/EI, tip shortening u/L and deflection v/L.
+    // Mattiasson, "Numerical results from large deflection beam and frame problems", IJNME 17,
+    // 1981: α = PL²/EI, tip shortening u/L and deflection v/L.
     const double table[][3] = {{1, 0.05643, 0.30172}, {2, 0.16064, 0.49346}, {5, 0.38763, 0.71379}, {10, 0.55500, 0.81061}};
     for (const auto& row : table) {
         const ElasticaTip t = cantilever_tip_load(row[0]);
