@@ -90,7 +90,8 @@ TEST_CASE("Two bars pinned at their apex snap through as the von Mises truss", "
     // Bars from (∓1, 0) to (0, 0.1), pinned at their feet, released at the apex; EA = 1e4. With
     // the engineering strain of the co-rotational element the apex load at a descent w is
     // P(w) = 2·EA·(L0 − L)/L0 · (h − w)/L, L = √(a² + (h − w)²) (the truss analogue of Williams'
-    // toggle; Crisfield, "Non-linear Finite Element Analysis of Solids and Structures" 1, 1991, §1.2). EI = 1e3 keeps each bar's Euler load 300 times its largest force.
+    // toggle; Crisfield, "Non-linear Finite Element Analysis of Solids and Structures" 1, 1991,
+    // §1.2). EI = 1e3 keeps each bar's Euler load 300 times its largest force.
     const double a = 1.0, h = 0.1, EA = 1.0e4, L0 = std::hypot(a, h);
     const auto closed_form = [&](double w) {
         const double L = std::hypot(a, h - w);
