@@ -56,6 +56,23 @@ std::string to_json(const RunReport& r) {
     j["iterations"] = r.summary.iterations;
     j["cut_steps"] = r.summary.cut_steps;
     j["refined_steps"] = r.summary.refined_steps;
+    if (r.model) {
+        // The tolerance used and why: the scene's, or the default raised to the round-off floor.
+        const AnalysisSpec& a = r.model->analysis;
+        Json t = {{"given", a.residual_tolerance_follows_floor ? Json(nullptr) : Json(a.residual_tolerance)},
+                            {"default", 1e-6}};
+        if (a.residual_tolerance_follows_floor && r.summary.largest_residual_tolerance > a.residual_tolerance) {
+            t["largest_used"] = r.summary.largest_residual_tolerance;
+            t["at_step"] = r.summary.largest_tolerance_step;
+            t["why"] = "the default residual_tolerance follows the model's round-off floor (its stiffest terms times the rounding of its "
+                       "displacements) where that floor lies above it; give residual_tolerance to fix it";
+        }
+        j["residual_tolerance"] = t;
+    }
+    if (r.summary.negative_pivot_steps > 0) {
+        j["negative_pivot_steps"] = r.summary.negative_pivot_steps;
+        j["first_negative_pivot_step"] = r.summary.first_negative_pivot_step;
+    }
     // Which rule accepted the steps: the residual within its tolerance, or round-off
     // stagnation within ten times it (never more).
     j["accepted_by"] = {{"residual", r.summary.accepted_by_residual}, {"stagnation", r.summary.accepted_by_stagnation}};

@@ -771,6 +771,7 @@ private:
         if (r.has("max_increment") && a.max_increment < a.initial_increment)
             r.fail("max_increment", "must not be below the first increment");
         a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
+        a.residual_tolerance_follows_floor = !r.has("residual_tolerance");
         a.residual_tolerance = r.positive_or("residual_tolerance", 1e-6);
         a.displacement_tolerance = r.positive_or("displacement_tolerance", 1e-6);
         a.allow_crossing = r.boolean_or("allow_crossing", false);

@@ -124,6 +124,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     NewtonSettings settings;
     settings.max_iterations = a.max_iterations;
     settings.residual_tolerance = a.residual_tolerance;
+    settings.tolerance_follows_floor = a.residual_tolerance_follows_floor;
     settings.displacement_tolerance = a.displacement_tolerance;
     settings.reference_level = peak_lambda_;
     // Hinged and fibre members are left out: with them, four variants that complete (the arch
@@ -403,15 +404,19 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             if (outcome.failure == NewtonFailure::no_constraint_root) missed_arc_in_step_ = true;
             const RoundOffFloor floor_at_failure =
                 outcome.failure != NewtonFailure::non_finite ? round_off_floor() : RoundOffFloor{};
-            const bool hopeless = failures_in_step_ > 3 && floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
+            // (A tolerance that follows the floor is never below it.)
+            const bool hopeless = !a.residual_tolerance_follows_floor && failures_in_step_ > 3 &&
+                                  floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
             const bool giving_up = std::abs(0.5 * step_h) < h_min || hopeless;
             // Under load control, the tangent where the failed increment ended tells whether
             // the structure has passed its limit (a plastic mechanism or buckling); it is read
             // only when the run stops here.
             bool beyond_limit = false;
             // Not before the first step: the unloaded tangent was found positive definite, so a
-            // negative pivot there is round-off, not a limit at load factor 0.
-            const bool can_be_limit = a.scheme == Scheme::load_control && step_ > 0;
+            // negative pivot there is round-off, not a limit at load factor 0. Nor where the
+            // factor only moves supports or bases (a platen's travel): the user prescribes that
+            // motion, and a negative pivot along it limits nothing the factor scales.
+            const bool can_be_limit = a.scheme == Scheme::load_control && step_ > 0 && model_.has_forces(a.pattern);
             // A base the structure has left holds nothing: if that frees a rigid motion, the
             // failure is a mechanism, named with the contact that released it.
             const std::string mechanism = giving_up ? probe_contact_mechanism(u_saved, lambda_saved) : std::string();
@@ -448,7 +453,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
                 else why << " with the increment cut to " << std::abs(h);
                 why << "; the residual ended at " << outcome.residual << " of the load, residual_tolerance "
                     << a.residual_tolerance << ")";
-                if (floor_at_failure.total >= 0.1 * a.residual_tolerance) {
+                if (!a.residual_tolerance_follows_floor && floor_at_failure.total >= 0.1 * a.residual_tolerance) {
                     why << ": round-off alone leaves about " << floor_at_failure.total
                         << " of the load out of balance in this model (its stiffest terms times the rounding "
                            "of its displacements), so the tolerance cannot be met; ";
@@ -480,6 +485,10 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             continue;
         }
         refined_advance_ = 0.0;
+        if (outcome.tolerance > summary.largest_residual_tolerance) {
+            summary.largest_residual_tolerance = outcome.tolerance;
+            summary.largest_tolerance_step = step_ + 1;
+        }
         system_.commit();
         remember_contact();
         failures_in_step_ = 0;
@@ -490,7 +499,11 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         arc_length_ += previous_increment_.norm();
         path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
         const std::string crossing = check_penetration();
-        if (!publish(make_result(step_, outcome.iterations, outcome.rule, control.report_sections))) return finish(step_ - 1);
+        const StepResult& result = make_result(step_, outcome.iterations, outcome.rule, control.report_sections);
+        if (result.negative_pivots > 0) {
+            if (summary.negative_pivot_steps++ == 0) summary.first_negative_pivot_step = step_;
+        }
+        if (!publish(result)) return finish(step_ - 1);
         if (!crossing.empty()) {
             summary.status = RunStatus::penetration;
             summary.reason = crossing;
@@ -514,7 +527,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         // Under load control a mechanism's regularised plateau can be followed in ever smaller
         // load steps (the extrapolated start finds them): once the increment has been cut to
         // a thousandth, a tangent without stiffness in the load direction is the limit load.
-        if (a.scheme == Scheme::load_control && std::abs(step_h) < 1e-3 * std::abs(a.initial_increment) &&
+        if (a.scheme == Scheme::load_control && model_.has_forces(a.pattern) && std::abs(step_h) < 1e-3 * std::abs(a.initial_increment) &&
             tangent_shows_limit()) {
             summary.status = RunStatus::limit_load;
             std::ostringstream why;

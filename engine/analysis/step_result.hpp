@@ -66,6 +66,14 @@ struct RunSummary {
     int refined_steps = 0;
     int accepted_by_residual = 0;
     int accepted_by_stagnation = 0;
+    // Converged steps whose tangent had a negative pivot (past a limit or a bifurcation), and the
+    // first of them (−1: none).
+    // The largest residual tolerance a step was accepted with, and that step: above the
+    // analysis' own where the tolerance followed the round-off floor.
+    double largest_residual_tolerance = 0.0;
+    int largest_tolerance_step = 0;
+    int negative_pivot_steps = 0;
+    int first_negative_pivot_step = -1;
     double seconds = 0.0;
 };
 

@@ -281,10 +281,10 @@ RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, d
         const double k[3] = {spring.kx, spring.ky, spring.krot};
         for (std::size_t d = 0; d < 3; ++d) springs[at + d] += k[d] * std::abs(u_full[at + d]);
     }
-    const double load = gather(external_force(load_factor)).norm();
-    if (!(load > 0.0)) return {};
     const double eps = std::numeric_limits<double>::epsilon();
-    return {eps * floor.norm() / load, eps * springs.norm() / load};
+    const double load = gather(external_force(load_factor)).norm();
+    if (!(load > 0.0)) return {0.0, 0.0, eps * floor.norm()};
+    return {eps * floor.norm() / load, eps * springs.norm() / load, eps * floor.norm()};
 }
 
 Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {

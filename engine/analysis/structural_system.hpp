@@ -19,7 +19,8 @@
 namespace plastica {
 
 struct RoundOffFloor {
-    double total = 0.0, from_springs = 0.0;
+    double total = 0.0, from_springs = 0.0; // relative to the load at the state's λ
+    double force = 0.0;                     // the whole, as a force (whatever the load)
 };
 
 class StructuralSystem {

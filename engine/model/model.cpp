@@ -43,6 +43,11 @@ bool Model::loaded(int pattern) const {
            std::any_of(prescribed.begin(), prescribed.end(), in);
 }
 
+bool Model::has_forces(int pattern) const {
+    auto in = [pattern](const auto& item) { return item.pattern == pattern; };
+    return std::any_of(loads.begin(), loads.end(), in) || std::any_of(pressures.begin(), pressures.end(), in);
+}
+
 bool Model::has_unilateral_base() const {
     for (const auto& s : springs)
         if (s.unilateral) return true;

@@ -155,6 +155,9 @@ struct AnalysisSpec {
     int max_iterations = 30;
     int max_steps = 1000;
     double residual_tolerance = 1e-6;     // ‖R‖ relative to the reference load
+    // Not given by the scene: the tolerance then rises to the state's round-off floor where
+    // that lies above it (a fine mesh, a stiff penalty), instead of stopping the run.
+    bool residual_tolerance_follows_floor = false;
     double displacement_tolerance = 1e-8; // ‖δu‖ relative to ‖Δu‖ of the step
     std::optional<double> target_load_factor;
     std::optional<double> target_displacement; // on the control DOF, signed as reported
@@ -221,6 +224,9 @@ struct Model {
     bool loaded() const { return !loads.empty() || !pressures.empty() || !prescribed.empty(); }
     // Whether pattern p has loads, pressures or prescribed displacements.
     bool loaded(int pattern) const;
+    // Forces (nodal loads, line loads, pressure) in the pattern; without them the pattern only
+    // moves supports or bases, and a negative pivot along it is no limit of anything it scales.
+    bool has_forces(int pattern) const;
     // Whether a base of pattern p moves.
     bool has_moving_base(int pattern) const;
     // Nothing but moving bases drives pattern p.

@@ -96,6 +96,13 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             result.failure = NewtonFailure::non_finite;
             return result;
         }
+        // The state's round-off floor, when the tolerance follows it: no residual can be brought
+        // below it, however small the increment.
+        const double tolerance =
+            settings.tolerance_follows_floor
+                ? std::max(settings.residual_tolerance, problem.round_off_force() / std::max(problem.force_scale(level), 1e-300))
+                : settings.residual_tolerance;
+        result.tolerance = tolerance;
         const double previous_relative = it > 0 ? result.residual : relative;
         result.residual = relative;
         if (it > 1) result.contraction = relative / std::max(previous_relative, 1e-300);
@@ -104,7 +111,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
         // hardening: a correction for a residual just above the tolerance can cross the kink where
         // the hinge unloads and throw the state far off. Half of that correction is taken back
         // (a backtracking line search), so that the state stays on the side Newton's model holds.
-        const bool near_tolerance = last_good_relative <= settings.stagnation_factor * settings.residual_tolerance;
+        const bool near_tolerance = last_good_relative <= settings.stagnation_factor * tolerance;
         if (settings.backtrack_at_kinks && it >= 2 && backtracks < max_backtracks && near_tolerance &&
             relative > kink_growth * last_good_relative) {
             ++backtracks;
@@ -131,34 +138,34 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             correction_floor = 1e-9 * problem.state_norm();
             const bool small_correction = within(last_correction, 1.0);
             const bool settled = problem.settled();
-            in_equilibrium = settled && relative <= settings.residual_tolerance;
+            in_equilibrium = settled && relative <= tolerance;
             // Equilibrium with frozen active sets that the state contradicts: let them be
             // re-decided once, then freeze again (an active-set iteration).
-            release = !settled && relative <= settings.residual_tolerance * settings.stagnation_factor;
+            release = !settled && relative <= tolerance * settings.stagnation_factor;
             if (release && result.iterations_before_settling == 0) result.iterations_before_settling = it;
             // Below the tolerance and no longer falling: round-off, which a nearly singular tangent
             // (near a bifurcation, a membrane far stiffer than its bending) turns into corrections
             // as large as a tiny increment, so they would never pass the correction test.
-            const bool floor_reached = it > 1 && relative <= settings.residual_tolerance && relative > 0.5 * previous_relative;
+            const bool floor_reached = it > 1 && relative <= tolerance && relative > 0.5 * previous_relative;
             if (floor_reached && settled && !small_correction) {
                 result.rule = Acceptance::stagnation;
                 return result;
             }
             if (small_correction && settled) {
-                if (relative <= settings.residual_tolerance) {
+                if (relative <= tolerance) {
                     result.rule = Acceptance::residual;
                     return result;
                 }
                 // Round-off stagnation: the state no longer moves, the residual no longer falls,
                 // and it is within a few times the tolerance (a stiff membrane's floor).
                 if (last_correction <= correction_floor && relative > 0.5 * previous_relative &&
-                    relative <= settings.stagnation_factor * settings.residual_tolerance) {
+                    relative <= settings.stagnation_factor * tolerance) {
                     result.rule = Acceptance::stagnation;
                     return result;
                 }
             }
             if (settings.fail_fast && it == 1 && relative > previous_relative &&
-                relative > settings.stagnation_factor * settings.residual_tolerance) {
+                relative > settings.stagnation_factor * tolerance) {
                 result.failure = NewtonFailure::diverged;
                 return result;
             }
@@ -172,7 +179,7 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
                 // piecewise-linear law at that floor (a stiff membrane's), where no increment,
                 // however small, does better. Accepted as stagnation, as a floor reached directly
                 // is. Above the floor, wandering is Newton's failure, and the increment is cut.
-                if (settled && relative <= settings.stagnation_factor * settings.residual_tolerance &&
+                if (settled && relative <= settings.stagnation_factor * tolerance &&
                     relative <= round_off_margin * problem.round_off_floor()) {
                     result.rule = Acceptance::stagnation;
                     return result;

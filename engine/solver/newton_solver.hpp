@@ -33,6 +33,8 @@ public:
     virtual double state_norm() const = 0; // ‖x‖, for the round-off floor of a correction
     // The relative residual that the rounding of the state alone leaves (0: not known).
     virtual double round_off_floor() const { return 0.0; }
+    // The same floor as a force (the norm of eps·|K|·|u|), to be measured against force_scale.
+    virtual double round_off_force() const { return 0.0; }
     // The force the residual is measured against, given the load level: the reference load at
     // that level, unless the problem knows a truer scale (the force a platen presses with).
     virtual double force_scale(double level) const { return level * load_direction().norm(); }
@@ -57,6 +59,8 @@ const char* to_string(NewtonFailure failure);
 struct NewtonSettings {
     int max_iterations = 30;
     double residual_tolerance = 1e-6;     // ‖R‖ relative to the reference load
+    // Raise the tolerance to the evaluated state's round-off floor where that lies above it.
+    bool tolerance_follows_floor = false;
     double displacement_tolerance = 1e-8; // ‖δx‖ relative to ‖Δx‖ of the increment
     double reference_level = 0.0;         // |λ| the residual is measured against (0: this increment's)
     // Stagnation at round-off is accepted only within this multiple of the tolerance.
@@ -81,6 +85,7 @@ struct NewtonResult {
     NewtonFailure failure = NewtonFailure::none;
     int iterations = 0;
     double residual = 0.0; // relative, at the last evaluation
+    double tolerance = 0.0; // the residual tolerance at the last evaluation (above the given one where it follows the floor)
     Eigen::VectorXd increment; // Δx of the increment
     double load_change = 0.0;  // Δλ
     int negative_pivots_seen = 0; // most negative pivots of any tangent factorised
