@@ -18,6 +18,11 @@ ContactSheet::ContactSheet(std::size_t frame_count, int columns, int rows, doubl
     const std::size_t cells = static_cast<std::size_t>(columns * rows);
     if (frame_count == 0) return;
     const std::size_t n = std::min(cells, frame_count);
+    // A grid no larger than its frames: 4 frames in 2 × 2, 2 in a row, 5 or 6 in 3 × 2 (no
+    // rows of blank cells).
+    const int count = static_cast<int>(n);
+    columns_ = std::min(columns, count == 4 && columns >= 2 ? 2 : count);
+    rows_ = std::min(rows, (count + columns_ - 1) / columns_);
     for (std::size_t k = 0; k < n; ++k)
         chosen_.push_back(n == 1 ? 0 : static_cast<std::size_t>(std::lround(double(k) * (frame_count - 1) / (n - 1))));
     tiles_.resize(chosen_.size());

@@ -13,7 +13,8 @@ namespace plastica::render {
 
 class ContactSheet {
 public:
-    // Keeps `columns × rows` of `frame_count` frames, evenly spread, first and last included.
+    // Keeps up to `columns × rows` of `frame_count` frames, evenly spread, first and last
+    // included, in a grid shrunk to fit them.
     ContactSheet(std::size_t frame_count, int columns = 3, int rows = 3, double shrink = 0.5);
 
     bool wants(std::size_t frame) const;

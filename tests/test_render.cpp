@@ -3,6 +3,7 @@
 #include "render_helpers.hpp"
 
 #include "charts.hpp"
+#include "contact_sheet.hpp"
 #include "figure_text.hpp"
 #include "legend_corner.hpp"
 #include "palette.hpp"
@@ -73,11 +74,11 @@ TEST_CASE("An inelastic ring renders headless: sizes, colours, hinges, contact a
     auto first = read_png((out / "frames" / "frame_000000.png").string());
     CHECK(count_pixels(first, [](Pixel p) { return is(p, colour::hinge_plastic); }, 0, structure_right, band_bottom, 1) == 0);
     CHECK(count_pixels(first, green, 0, structure_right, band_bottom, 1) == 0);
-    // The contact sheet is a 3 × 3 grid of half-size frames.
+    // The contact sheet: its 5 frames in a 3 × 2 grid of half-size frames.
     auto sheet = read_png((out / "contact_sheet.png").string());
     sheet->GetDimensions(d);
     CHECK(d[0] == 3 * 320);
-    CHECK(d[1] == 3 * 180);
+    CHECK(d[1] == 2 * 180);
 }
 
 TEST_CASE("An elastic ring has no hinge layer and a scene without a base has no contact arrows", "[render]") {
@@ -605,4 +606,25 @@ TEST_CASE("A chart on log axes draws its lines", "[render]") {
     // The line runs from the left third to the right third of the plot.
     CHECK(count_pixels(chart, orange, 0.15, 0.35, band_bottom, 1) > 100);
     CHECK(count_pixels(chart, orange, 0.65, 0.9, band_bottom, 1) > 100);
+}
+
+TEST_CASE("A contact sheet's grid is no larger than its frames", "[render]") {
+    auto tile = [] {
+        auto image = vtkSmartPointer<vtkImageData>::New();
+        image->SetDimensions(40, 20, 1);
+        image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+        return image;
+    };
+    // frames → expected columns × rows of 40 × 20 tiles (3 × 3 at most).
+    const int cases[][3] = {{1, 1, 1}, {2, 2, 1}, {3, 3, 1}, {4, 2, 2}, {5, 3, 2}, {6, 3, 2}, {7, 3, 3}, {30, 3, 3}};
+    for (const auto& c : cases) {
+        CAPTURE(c[0]);
+        ContactSheet sheet(static_cast<std::size_t>(c[0]), 3, 3, 1.0);
+        for (int k = 0; k < c[0]; ++k)
+            if (sheet.wants(static_cast<std::size_t>(k))) sheet.keep(static_cast<std::size_t>(k), tile());
+        int dims[3];
+        sheet.compose()->GetDimensions(dims);
+        CHECK(dims[0] == 40 * c[1]);
+        CHECK(dims[1] == 20 * c[2]);
+    }
 }

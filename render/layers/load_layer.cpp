@@ -133,7 +133,7 @@ private:
     double length_ = 0.0;
     ArrowScale scale_;
     ViewGeometry view_;
-    FlatMarks arrows_{3.5};
+    FlatMarks arrows_{6.5}; // above the hinge markers: a load at a hinged joint stays visible
     ArrowLabels labels_;
 };
 
