@@ -333,7 +333,7 @@ TEST_CASE("plastica compare: same pictures pass, a missing picture fails, a size
 
     const Result sizes = command("compare " + (references / "contact_sheet.png").string() + " " + (references / "chart.png").string());
     CHECK(sizes.code == 2);
-    CHECK_THAT(sizes.output, Catch::Contains("size mismatch, 960x540 against the reference's 640x360"));
+    CHECK_THAT(sizes.output, Catch::Contains("size mismatch, 960x180 against the reference's 640x360"));
 
     const Result unreadable = command("compare " + (copy / "nothing.png").string() + " " + (references / "chart.png").string());
     CHECK(unreadable.code == 2);
