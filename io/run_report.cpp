@@ -60,7 +60,7 @@ std::string to_json(const RunReport& r) {
         // The tolerance used and why: the scene's, or the default raised to the round-off floor.
         const AnalysisSpec& a = r.model->analysis;
         Json t = {{"given", a.residual_tolerance_follows_floor ? Json(nullptr) : Json(a.residual_tolerance)},
-                            {"default", 1e-6}};
+                            {"default", AnalysisSpec::default_residual_tolerance}};
         if (a.residual_tolerance_follows_floor && r.summary.largest_residual_tolerance > a.residual_tolerance) {
             t["largest_used"] = r.summary.largest_residual_tolerance;
             t["at_step"] = r.summary.largest_tolerance_step;

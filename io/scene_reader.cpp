@@ -772,7 +772,7 @@ private:
             r.fail("max_increment", "must not be below the first increment");
         a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
         a.residual_tolerance_follows_floor = !r.has("residual_tolerance");
-        a.residual_tolerance = r.positive_or("residual_tolerance", 1e-6);
+        a.residual_tolerance = r.positive_or("residual_tolerance", AnalysisSpec::default_residual_tolerance);
         a.displacement_tolerance = r.positive_or("displacement_tolerance", 1e-6);
         a.allow_crossing = r.boolean_or("allow_crossing", false);
         if (r.has("target_load_factor") && r.has("target_displacement"))

@@ -3,33 +3,12 @@
 // P = P0/√(1 − (δ/D)²), P0 = 4·M_p/R, δ the plates' approach. Fibre sections along the members,
 // steel with a hardening of 1e-4·E (perfectly plastic fibres stop earlier: README, limits).
 #include "analysis_helpers.hpp"
+#include "crushed_ring.hpp"
 
 #include <catch2/catch.hpp>
 
 using namespace plastica;
 using namespace plastica::testing;
-
-namespace {
-
-// A half ring of R = 100 and wall h = R/(R/h) (b = 1), 50 elements, between a fixed lower plate
-// and an upper one moving down by the load factor; penalty 1e4·EI/R³ on both.
-std::string crushed_ring(double r_over_h, const std::string& analysis) {
-    const double R = 100.0, h = R / r_over_h, E = 210000.0, EI = E * h * h * h / 12.0, k = 1e4 * EI / (R * R * R);
-    return "[scene]\nname = \"crush\"\n[[material]]\nname = \"steel\"\nE = 210000.0\nfy = 355.0\nlaw = \"kinematic_hardening\"\n"
-           "hardening_ratio = 1e-4\n[[section]]\nname = \"ring\"\nmaterial = \"steel\"\nshape = \"rectangle\"\nb = 1.0\nh = " +
-           std::to_string(h) +
-           "\nplasticity = \"distributed\"\n[[arc]]\nname = \"ring\"\ncenter = [0.0, 100.0]\nradius = 100.0\nstart_angle = -90.0\n"
-           "end_angle = 90.0\nelements = 50\nsection = \"ring\"\n"
-           "[[support]]\nat = [0.0, 0.0]\nfix = [\"ux\", \"rz\"]\n[[support]]\nat = [0.0, 200.0]\nfix = [\"ux\", \"rz\"]\n"
-           "[[foundation]]\nkind = \"unilateral\"\non = \"ring\"\nky = " + std::to_string(k) +
-           "\nhalve_at = [[0.0, 0.0]]\n"
-           "[[foundation]]\nkind = \"unilateral\"\non = \"ring\"\nky = " + std::to_string(k) +
-           "\nhalve_at = [[0.0, 200.0]]\nbase_point = [0.0, 200.0]\nbase_normal = [0.0, -1.0]\nbase_motion = [0.0, -1.0]\n"
-           "[analysis]\n" + analysis + "control_at = [0.0, 200.0]\ncontrol_dof = \"uy\"\ncontrol_sign = -1.0\nmax_steps = 4000\n"
-           "[report]\nload_scale = 2.0\n";
-}
-
-} // namespace
 
 TEST_CASE("Steel rings crushed to 65 % of their diameter follow DeRuntz and Hodge's crush load", "[contact][distributed][crushing]") {
     // Measured ratio P/P_DH from δ = 0.2 D on: R/h 10: 0.975–1.059, R/h 20: 0.972–1.043, R/h 40:

@@ -3,6 +3,7 @@
 // ring scenes: Hetényi's beam on a Winkler foundation, the tensionless foundation, the
 // pinched ring at small load, penalty convergence, equilibrium of contact forces, symmetry.
 #include "analysis_helpers.hpp"
+#include "crushed_ring.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -320,55 +321,7 @@ TEST_CASE("A platen's travel is no load: negative pivots along it are counted, n
     // A steel ring (R/h = 10, fibre sections) crushed by a platen under load control of its
     // travel, penalty 1.75e9. Its tangent turns indefinite from travel 10.6 on; that stopped the
     // run as "limit load reached at 12.77" although the user prescribes the travel.
-    const std::string crush = R"([scene]
-name = "crush"
-[[material]]
-name = "steel"
-E = 210000.0
-fy = 355.0
-[[section]]
-name = "ring"
-material = "steel"
-shape = "rectangle"
-b = 1.0
-h = 10.0
-plasticity = "distributed"
-[[arc]]
-name = "ring"
-center = [0.0, 100.0]
-radius = 100.0
-start_angle = -90.0
-end_angle = 90.0
-elements = 50
-section = "ring"
-[[support]]
-at = [0.0, 0.0]
-fix = ["ux", "rz"]
-[[support]]
-at = [0.0, 200.0]
-fix = ["ux", "rz"]
-[[foundation]]
-kind = "unilateral"
-on = "ring"
-ky = 1.75e9
-halve_at = [[0.0, 0.0]]
-[[foundation]]
-kind = "unilateral"
-on = "ring"
-ky = 1.75e9
-halve_at = [[0.0, 200.0]]
-base_point = [0.0, 200.0]
-base_normal = [0.0, -1.0]
-base_motion = [0.0, -1.0]
-[analysis]
-scheme = "load_control"
-increment = 0.5
-target_load_factor = 16.0
-control_at = [0.0, 200.0]
-control_dof = "uy"
-control_sign = -1.0
-max_steps = 4000
-)";
+    const std::string crush = crushed_ring(10.0, "scheme = \"load_control\"\nincrement = 0.5\ntarget_load_factor = 16.0\n", "", 1.75e9);
     const Run r = run_scene(crush);
     INFO(r.summary.reason);
     CHECK(r.summary.status == RunStatus::completed);

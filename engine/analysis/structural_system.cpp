@@ -260,10 +260,9 @@ double StructuralSystem::trial_yield_advance() const {
     return advance;
 }
 
-RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, double load_factor) const {
+double StructuralSystem::round_off_force(const Eigen::VectorXd& u_full) const {
     // A displacement is known to about eps·|u|, so the residual of K·u cannot be brought below
-    // about eps·|K|·|u| (absolute values throughout): relative to the load, that is this
-    // state's floor. K is stored as its lower triangle.
+    // about eps·|K|·|u| (absolute values throughout). K is stored as its lower triangle.
     const SparseMatrix& K = tangent();
     const Eigen::VectorXd u = gather(u_full).cwiseAbs();
     Eigen::VectorXd floor = Eigen::VectorXd::Zero(u.size());
@@ -273,6 +272,12 @@ RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, d
             floor[it.row()] += k * u[col];
             if (it.row() != col) floor[col] += k * u[it.row()];
         }
+    return std::numeric_limits<double>::epsilon() * floor.norm();
+}
+
+RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, double load_factor) const {
+    // Relative to the load, round_off_force is this state's floor.
+    const double force = round_off_force(u_full);
     // The springs' share: their stiffness times the rounding of their node's displacement.
     Eigen::VectorXd springs = Eigen::VectorXd::Zero(u_full.size());
     for (std::size_t s = 0; s < foundation_.size(); ++s) {
@@ -281,10 +286,9 @@ RoundOffFloor StructuralSystem::round_off_floor(const Eigen::VectorXd& u_full, d
         const double k[3] = {spring.kx, spring.ky, spring.krot};
         for (std::size_t d = 0; d < 3; ++d) springs[at + d] += k[d] * std::abs(u_full[at + d]);
     }
-    const double eps = std::numeric_limits<double>::epsilon();
     const double load = gather(external_force(load_factor)).norm();
-    if (!(load > 0.0)) return {0.0, 0.0, eps * floor.norm()};
-    return {eps * floor.norm() / load, eps * springs.norm() / load, eps * floor.norm()};
+    if (!(load > 0.0)) return {0.0, 0.0, force};
+    return {force / load, std::numeric_limits<double>::epsilon() * springs.norm() / load, force};
 }
 
 Eigen::VectorXd StructuralSystem::gather(const Eigen::VectorXd& full) const {

@@ -83,6 +83,8 @@ public:
     // The residual, relative to the load at λ, that the rounding of the displacements u alone
     // leaves at the last evaluation, and the part of it the foundation springs' penalties cause.
     RoundOffFloor round_off_floor(const Eigen::VectorXd& u, double load_factor) const;
+    // Its force alone, eps·‖|K|·|u|‖ (no load or springs to gather): Newton asks every iteration.
+    double round_off_force(const Eigen::VectorXd& u) const;
 
     Eigen::VectorXd gather(const Eigen::VectorXd& full) const;
     void gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const; // no allocation once sized

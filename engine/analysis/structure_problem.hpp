@@ -32,7 +32,7 @@ public:
     double load_factor() const override { return lambda_; }
     double state_norm() const override { return u_free_.norm(); }
     double round_off_floor() const override { return system_.round_off_floor(u_, lambda_).total; }
-    double round_off_force() const override { return system_.round_off_floor(u_, lambda_).force; }
+    double round_off_force() const override { return system_.round_off_force(u_); }
     // Driven by platens alone, the residual is measured against the force they press with
     // (λ times their penalty stiffness would be the force on a rigid structure, far above it);
     // loads held from earlier stages add their size.

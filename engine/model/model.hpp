@@ -154,7 +154,8 @@ struct AnalysisSpec {
     bool adaptive = true;
     int max_iterations = 30;
     int max_steps = 1000;
-    double residual_tolerance = 1e-6;     // ‖R‖ relative to the reference load
+    static constexpr double default_residual_tolerance = 1e-6;
+    double residual_tolerance = default_residual_tolerance; // ‖R‖ relative to the reference load
     // Not given by the scene: the tolerance then rises to the state's round-off floor where
     // that lies above it (a fine mesh, a stiff penalty), instead of stopping the run.
     bool residual_tolerance_follows_floor = false;
