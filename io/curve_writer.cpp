@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <charconv>
 #include <cstring>
 #include <stdexcept>
@@ -68,6 +69,8 @@ std::string curve_header(const Model& model) {
     // A staged run says which stage each step belongs to, and a run of several patterns each
     // pattern's factor (load_factor is the factor of the pattern the step's stage drives).
     if (!model.stages.empty()) header += ",stage";
+    // Self-contact: the pairs of surfaces pressed together and the normal force they exchange.
+    if (!model.self_contact.empty()) header += ",surface_contacts,surface_contact_force";
     for (int p : result::active_patterns(model)) header += ",factor_" + model.patterns[static_cast<std::size_t>(p)];
     for (const std::string& name : reaction_columns(model)) header += ',' + name;
     header += '\n';
@@ -81,6 +84,11 @@ std::string curve_row(const Model& model, const StepResult& r) {
         << r.plastic_hinge_count << ',' << r.base_reaction << ',' << r.contact_length << ','
         << r.negative_pivots << ',' << to_string(r.accepted_by) << ',' << r.residual;
     if (!model.stages.empty()) row << ',' << r.stage;
+    if (!model.self_contact.empty()) {
+        double total = 0.0;
+        for (const SurfaceContactResult& c : r.surface_contacts) total += std::hypot(c.force[0], c.force[1]);
+        row << ',' << static_cast<int>(r.surface_contacts.size()) << ',' << total;
+    }
     for (int p : result::active_patterns(model))
         row << ',' << (static_cast<std::size_t>(p) < r.pattern_factors.size() ? r.pattern_factors[static_cast<std::size_t>(p)] : 0.0);
     for (const SupportReaction& s : support_reactions(model, r))

@@ -29,6 +29,7 @@ const std::vector<Array> schema = {
     {name::contact_force, W::point, T::float64, 3, Q::force, When::unilateral_base, "fx, fy, 0 the bases press with (summed over bases)"},
     {name::gap, W::point, T::float64, 1, Q::length, When::unilateral_base, "distance to the nearest base (negative: penetration)"},
     {name::contact, W::point, T::int32, 1, Q::none, When::unilateral_base, "0 open, 1 in contact"},
+    {name::surface_contact_force, W::point, T::float64, 3, Q::force, When::self_contact, "fx, fy, 0 other surfaces press the node with (as a touching node or a segment's end)"},
     {name::plastic_utilisation, W::point, T::float64, 1, Q::none, When::hinges, "largest |M|/Mp(N) of the ends at the node, each end at its own N: 0 … 1 at capacity"},
     {name::hinge_state, W::point, T::int32, 1, Q::none, When::hinges, "0 elastic, 1 yielding, 2 fully plastic, 3 failed fibre (worst end)"},
     {name::axial_force, W::cell, T::float64, 1, Q::force, When::always, "N, positive in tension"},
@@ -52,6 +53,7 @@ const std::vector<Array> schema = {
     {name::step, W::field, T::float64, 1, Q::none, When::always, "step number"},
     {name::iterations, W::field, T::float64, 1, Q::none, When::always, "Newton iterations of the step"},
     {name::contact_count, W::field, T::float64, 1, Q::none, When::always, "nodes in contact"},
+    {name::surface_contact_count, W::field, T::float64, 1, Q::none, When::self_contact, "pairs of surfaces in contact (a node against a segment)"},
     {name::hinge_count, W::field, T::float64, 1, Q::none, When::always, "element ends yielding or fully plastic"},
     {name::stage, W::field, T::float64, 1, Q::none, When::staged, "1 for [analysis], then 2, 3, … for each [[stage]]"},
     {name::pattern_factors, W::field, T::float64, 1, Q::none, When::patterns, "each load pattern's factor, one value per pattern in the order of pattern_names"},
@@ -100,6 +102,7 @@ bool present(const Array& a, const Model& m) {
     case When::moving_base: return m.has_moving_base();
     case When::staged: return !m.stages.empty();
     case When::releases: return m.has_releases();
+    case When::self_contact: return !m.self_contact.empty();
     case When::patterns: return !active_patterns(m).empty();
     case When::moving_base_patterns: return m.has_moving_base() && !active_patterns(m).empty();
     }
@@ -146,7 +149,7 @@ std::string markdown_table() {
                                       "distributed plasticity", "a half model (`mirror_x`)", "units named in `[report]`",
                                       "springs or a rigid base", "a moving base", "stages (`[[stage]]`)",
                                       "two or more load patterns", "a moving base and two or more load patterns",
-                                      "released member ends"};
+                                      "released member ends", "self-contact (`[[self_contact]]`)"};
     std::ostringstream out;
     out << "| array | where | type | components | unit | written for | meaning |\n"
         << "|---|---|---|---|---|---|---|\n";

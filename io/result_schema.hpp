@@ -37,6 +37,7 @@ enum class When {
     patterns,                // more than one load pattern
     moving_base_patterns,    // base.vtp: a moving base, and more than one load pattern
     releases,                // a member end is released
+    self_contact,            // [[self_contact]]
 };
 
 struct Array {
@@ -79,6 +80,7 @@ inline constexpr const char* applied_moment = "applied_moment";
 inline constexpr const char* spring_force = "spring_force";
 inline constexpr const char* spring_moment = "spring_moment";
 inline constexpr const char* contact_force = "contact_force";
+inline constexpr const char* surface_contact_force = "surface_contact_force";
 inline constexpr const char* gap = "gap";
 inline constexpr const char* contact = "contact";
 inline constexpr const char* plastic_utilisation = "plastic_utilisation";
@@ -103,6 +105,7 @@ inline constexpr const char* control_displacement = "control_displacement";
 inline constexpr const char* step = "step";
 inline constexpr const char* iterations = "iterations";
 inline constexpr const char* contact_count = "contact_count";
+inline constexpr const char* surface_contact_count = "surface_contact_count";
 inline constexpr const char* hinge_count = "hinge_count";
 inline constexpr const char* mirror_x = "mirror_x";
 inline constexpr const char* scene = "scene";

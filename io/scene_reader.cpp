@@ -45,12 +45,13 @@ public:
         read_distributed_loads(top);
         read_prescribed(top);
         read_foundations(top);
+        read_self_contact(top);
         check_released_moments();
         read_analysis(top);
         read_stages(top);
         read_report(top);
         top.finish({"scene", "units", "material", "section", "node", "line", "arc", "element", "support",
-                    "load", "distributed_load", "prescribed", "foundation", "analysis", "stage", "report"});
+                    "load", "distributed_load", "prescribed", "foundation", "self_contact", "analysis", "stage", "report"});
         if (!model_.loaded() && !model_.has_moving_base())
             throw SceneError(file_, 1, "load",
                              "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement and no moving base (base_motion)");
@@ -166,8 +167,8 @@ private:
             SectionSpec s = shape.build(r, {m->second.E, m->second.steel});
             if (r.has("plastic"))
                 r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
-            // Hinges by default for an inelastic material (the seed's method), unless its law
-            // hardens past the capacity that hinges hold.
+            // Hinges by default for an inelastic material, unless its law hardens past the
+            // capacity that hinges hold.
             const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
             const std::string plasticity =
                 r.choice("plasticity", {"none", "hinges", "distributed"}, !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
@@ -342,6 +343,47 @@ private:
             const int added = static_cast<int>(model_.elements.size()) - 1;
             read_releases(r, added, added);
             r.finish({"nodes", "section", "releases"});
+        }
+    }
+
+    // [[self_contact]]: on = "all", a member's name or a list of them; stiffness optional.
+    void read_self_contact(TomlTableReader& top) {
+        const Tables list = array_of_tables(top, "self_contact");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            TomlTableReader r(*list[i].first, file_, indexed("self_contact", i), units());
+            std::vector<std::string> names;
+            const toml::node* on = r.node("on");
+            if (const toml::array* a = on ? on->as_array() : nullptr) {
+                for (const toml::node& n : *a) {
+                    if (!n.is_string()) r.fail("on", "expected \"all\", a member's name or a list of names");
+                    names.push_back(*n.value<std::string>());
+                }
+                if (names.empty()) r.fail("on", "expected at least one member's name");
+            } else {
+                if (on && !on->is_string()) r.fail("on", "expected \"all\", a member's name or a list of names");
+                names.push_back(on ? *on->value<std::string>() : "all");
+            }
+            SelfContactSpec spec;
+            std::vector<bool> taken(model_.elements.size(), false);
+            for (const std::string& name : names) {
+                if (name == "all") {
+                    std::fill(taken.begin(), taken.end(), true);
+                    continue;
+                }
+                auto g = member_elements_.find(name);
+                if (g == member_elements_.end()) {
+                    std::string known;
+                    for (const auto& m : member_elements_) known += (known.empty() ? "'" : ", '") + m.first + "'";
+                    r.fail("on", "expected \"all\" or the name of a [[line]] or [[arc]], got '" + name + "'" +
+                                     (known.empty() ? "" : "; the members: " + known));
+                }
+                for (int e : g->second) taken[static_cast<std::size_t>(e)] = true;
+            }
+            for (std::size_t e = 0; e < taken.size(); ++e)
+                if (taken[e]) spec.elements.push_back(static_cast<int>(e));
+            if (r.has("stiffness")) spec.stiffness = r.positive("stiffness", dimension::force_per_length);
+            model_.self_contact.push_back(std::move(spec));
+            r.finish({"on", "stiffness"});
         }
     }
 

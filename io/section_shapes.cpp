@@ -25,6 +25,8 @@ SectionSpec properties(TomlTableReader& t, const ShapeMaterial& m) {
     s.E = m.E;
     s.area = t.positive("A", dimension::area);
     s.inertia = t.positive("I", dimension::second_moment);
+    s.depth = t.number_or("thickness", 0.0, dimension::length);
+    if (t.has("thickness") && !(s.depth > 0.0)) t.fail("thickness", "expected a positive depth between the surfaces");
     if (m.steel) {
         // A and I alone define no fibres: an equivalent rectangle carries them.
         const double h = std::sqrt(12.0 * s.inertia / s.area);
@@ -36,7 +38,9 @@ SectionSpec properties(TomlTableReader& t, const ShapeMaterial& m) {
 SectionSpec rectangle(TomlTableReader& t, const ShapeMaterial& m) {
     const double b = t.positive("b", dimension::length);
     const double h = t.positive("h", dimension::length);
-    return rectangle_section(m.E, b, h, t.integer_or("fibres", 10, 1, 100000));
+    SectionSpec s = rectangle_section(m.E, b, h, t.integer_or("fibres", 10, 1, 100000));
+    s.depth = h;
+    return s;
 }
 
 // I or H section: flanges split into strips across the width and layers through the
@@ -65,6 +69,7 @@ SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
     s.E = m.E;
     s.area = 2.0 * bf * tf + hw * tw + 4.0 * fillet_area;
     s.inertia = (bf * d * d * d - (bf - tw) * hw * hw * hw) / 12.0 + 4.0 * (fillet_area * fillet_y * fillet_y + fillet_own_inertia);
+    s.depth = d;
     const double fy = m.steel ? m.steel->fy : 0.0;
     for (int side : {-1, 1})
         for (int l = 0; l < layers; ++l) {
@@ -94,6 +99,7 @@ SectionSpec hollow_circle(TomlTableReader& t, const ShapeMaterial& m) {
     const double d = D - 2.0 * th;
     s.area = M_PI * (D * D - d * d) / 4.0;
     s.inertia = M_PI * (D * D * D * D - d * d * d * d) / 64.0;
+    s.depth = D;
     const double rm = (D - th) / 2.0;
     for (int k = 0; k < n; ++k) s.fibres.push_back({s.area / n, rm * std::sin(2.0 * M_PI * (k + 0.5) / n), 0.0});
     return s;
@@ -132,7 +138,7 @@ SectionSpec explicit_fibres(TomlTableReader& t, const ShapeMaterial& m) {
 
 const std::vector<SectionShape>& section_shapes() {
     static const std::vector<SectionShape> shapes = {
-        {"properties", {"A", "I", "fibres"}, properties},
+        {"properties", {"A", "I", "fibres", "thickness"}, properties},
         {"rectangle", {"b", "h", "fibres"}, rectangle},
         {"i", {"depth", "flange_width", "flange_thickness", "web_thickness", "flange_strips", "flange_layers", "web_fibres",
                "residual_stress", "root_radius"}, i_section},

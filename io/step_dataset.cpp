@@ -173,6 +173,20 @@ XmlDataset StepDataset::operator()(const StepResult& r, double time) const {
         pd.push_back(std::move(gap));
         pd.push_back(std::move(state));
     }
+    if (has(name::surface_contact_force)) {
+        // Each pair presses its node one way and the segment's ends the other, shared as the
+        // segment's linear shape functions share the point where it is touched.
+        XmlArray surface = real_array(name::surface_contact_force, n, 3);
+        for (const SurfaceContactResult& c : r.surface_contacts) {
+            const double shares[2] = {c.segment[0] == c.segment[1] ? 1.0 : 1.0 - c.xi, c.segment[0] == c.segment[1] ? 0.0 : c.xi};
+            for (int d = 0; d < 2; ++d) {
+                real(surface)[3 * static_cast<std::size_t>(c.node) + d] += c.force[d];
+                for (int end = 0; end < 2; ++end)
+                    real(surface)[3 * static_cast<std::size_t>(c.segment[end]) + d] -= shares[end] * c.force[d];
+            }
+        }
+        pd.push_back(std::move(surface));
+    }
     if (has(name::yielded_share)) {
         // One tuple per element, one component per integration point (ξ order); elements
         // without fibre sections along them carry zeros.
@@ -238,6 +252,7 @@ XmlDataset StepDataset::operator()(const StepResult& r, double time) const {
     fd.push_back(field_value(name::step, r.step));
     fd.push_back(field_value(name::iterations, r.iterations));
     fd.push_back(field_value(name::contact_count, r.contact_count));
+    if (has(name::surface_contact_count)) fd.push_back(field_value(name::surface_contact_count, static_cast<int>(r.surface_contacts.size())));
     fd.push_back(field_value(name::hinge_count, r.hinge_count));
     if (has(name::stage)) fd.push_back(field_value(name::stage, r.stage));
     if (has(name::pattern_factors)) {

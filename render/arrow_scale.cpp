@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace plastica::render {
 
@@ -50,6 +51,12 @@ void ArrowLabels::add(const double tail[2], double dx, double dy, const std::str
     actor->SetInput(text.c_str());
     actor->SetPosition(tail[0] - gap * ux, tail[1] - gap * uy);
     actor->SetVisibility(true);
+}
+
+std::string longest_arrow_note(double largest, const std::string& unit) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g", largest);
+    return "longest: " + std::string(text) + (unit.empty() ? "" : " " + unit) + "\n(largest in the run)";
 }
 
 } // namespace plastica::render

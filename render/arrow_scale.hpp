@@ -26,6 +26,9 @@ struct ArrowScale {
     double length(double force) const;
 };
 
+// The note under an arrow layer's legend entry: the longest arrow's force, with its unit.
+std::string longest_arrow_note(double largest, const std::string& unit);
+
 // Values written beside arrows, in world coordinates, the text actors kept from frame to frame.
 class ArrowLabels {
 public:

@@ -43,6 +43,10 @@ const std::vector<LayerKind>& kinds() {
          [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
              return s.any_contact ? contact_layer(s) : nullptr;
          }},
+        {"surface_contact",
+         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+             return s.max_surface_contact_force > 0 ? surface_contact_layer(s) : nullptr;
+         }},
         {"supports", [](const SeriesSummary& s, vtkUnstructuredGrid* first, vtkPolyData*) { return support_layer(s, first); }},
         {"loads",
          [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {

@@ -22,6 +22,7 @@ constexpr Rgb base{70, 70, 70};
 constexpr Rgb hatching{130, 130, 130};
 constexpr Rgb spring_anchor{90, 90, 90};
 constexpr Rgb contact_force{0, 140, 60};
+constexpr Rgb surface_contact_force{110, 160, 20}; // a yellower green: contact of the members' own surfaces
 constexpr Rgb support{55, 65, 85};
 constexpr Rgb load{190, 20, 60};
 constexpr Rgb reaction{0, 150, 170};

@@ -220,6 +220,9 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
                     s.any_contact = s.any_contact || f > 0.0;
                 }
         }
+        if (vtkDataArray* force = grid->GetPointData()->GetArray(result::name::surface_contact_force))
+            for (vtkIdType i = 0; i < force->GetNumberOfTuples(); ++i)
+                s.max_surface_contact_force = std::max(s.max_surface_contact_force, tuple_magnitude(force, i));
         s.curve.push_back(c);
         const struct {
             const char* force;

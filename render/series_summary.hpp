@@ -44,6 +44,7 @@ struct SeriesSummary {
     bool unilateral = false;         // the scene has a unilateral base (contact arrays)
     bool any_contact = false;        // some step has a node in contact
     double max_contact_force = 0.0;
+    double max_surface_contact_force = 0.0; // largest push between surfaces ([[self_contact]]) at a node
     bool inelastic = false;          // the scene has plastic hinges (hinge arrays)
     bool mirrored = false;           // a half model drawn with its mirror image about x = mirror_x
     double mirror_x = 0.0;

@@ -385,6 +385,23 @@ std::vector<StabilityCase> robustness_cases() {
                                  return "";
                              }});
         }
+    // The flattening test: the steel ring pressed on until its walls meet (self-contact), under
+    // load control of the plate's travel (as shipped) and displacement control of the top.
+    for (const bool by_displacement : {false, true}) {
+        std::vector<std::pair<std::string, std::string>> edits;
+        if (by_displacement)
+            edits = {{"scheme = \"load_control\"", "scheme = \"displacement_control\""},
+                     {"target_load_factor = 195.0", "target_displacement = 195.0"}};
+        cases.push_back({"steel pipe ring flattened until its walls meet",
+                         by_displacement ? "displacement control" : "load control of the plate",
+                         edited(embedded_scene("gallery/steel_pipe_flattened"), edits), done,
+                         [](const Steps& steps, const RunSummary&) -> std::string {
+                             // The plate's travel (load control) or the top's (displacement control).
+                             const double travel = std::max(steps.back().load_factor, steps.back().control_displacement);
+                             if (travel < 195.0 - 1e-6) return "the walls came " + std::to_string(travel) + " closer only";
+                             return steps.back().surface_contacts.empty() ? "the walls met without touching" : "";
+                         }});
+    }
     return cases;
 }
 

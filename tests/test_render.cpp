@@ -185,7 +185,7 @@ TEST_CASE("Supports and loads are drawn where the scene has them, and --hide lea
     CHECK(count_pixels(frame, load, 0, structure_right, band_bottom, 1) == 0);
     hidden.hide = {"suports"};
     CHECK_THROWS_WITH(render_series(portal.string(), hidden),
-                      Catch::Contains("--hide takes initial, base, hinges, releases, contact, supports, loads (got 'suports')"));
+                      Catch::Contains("--hide takes initial, base, hinges, releases, contact, surface_contact, supports, loads (got 'suports')"));
     // A refused option leaves the pictures drawn before.
     CHECK(fs::exists(portal / "hidden" / "frames" / last));
 

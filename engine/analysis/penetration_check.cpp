@@ -85,7 +85,8 @@ std::string find_penetration(const Model& model, const Eigen::VectorXd& u, doubl
             const double band = 1e-9 * lengths[order[k]] * lengths[order[m]];
             if (cross(a, b, c, d, band))
                 return "the structure passes through itself: element " + std::to_string(order[k] + 1) +
-                       " crosses element " + std::to_string(order[m] + 1) + " near " + where(a);
+                       " crosses element " + std::to_string(order[m] + 1) + " near " + where(a) +
+                       (model.self_contact.empty() ? " (a [[self_contact]] table keeps the members' surfaces apart)" : "");
         }
     }
 

@@ -27,6 +27,15 @@ struct SpringResult {
     std::array<double, 3> force{0.0, 0.0, 0.0}; // on the node, from the spring or the base
 };
 
+// Two surfaces pressed together ([[self_contact]]): a node against a segment (or a segment end).
+struct SurfaceContactResult {
+    int node = 0;
+    std::array<int, 2> segment{0, 0}; // the segment's ends; the same twice for a segment end
+    double xi = 0.0;                  // where along the segment
+    double gap = 0.0;                 // negative: the penetration
+    std::array<double, 2> force{0.0, 0.0}; // on the node; its segment takes the opposite
+};
+
 struct StepResult {
     int step = 0;                   // 0 is the unloaded state
     double load_factor = 0.0;       // λ, the factor of the pattern the step's stage drives
@@ -46,6 +55,7 @@ struct StepResult {
     std::vector<ElementResult> elements;
     std::vector<SpringResult> springs;
     int contact_count = 0;
+    std::vector<SurfaceContactResult> surface_contacts;
     double base_reaction = 0.0;     // total normal force of the base
     double contact_length = 0.0;    // length of the deformed structure along active nodes
     int hinge_count = 0;            // element ends yielding or plastic

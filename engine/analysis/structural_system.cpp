@@ -76,10 +76,12 @@ std::vector<Eigen::VectorXd> nodal_loads(const Model& model) {
 } // namespace
 
 StructuralSystem::StructuralSystem(const Model& model)
-    : element_specs_(model.elements), nodes_(model.nodes), foundation_(model), pressure_(model),
+    : element_specs_(model.elements), nodes_(model.nodes), foundation_(model), self_contact_(model),
+      pressure_(model),
       joint_hinges_(model), pattern_loads_(nodal_loads(model)),
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
+    if (!self_contact_.empty()) blocks_ = assembly_blocks(model, equation_);
     for (const FoundationSpring& s : model.springs)
         on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
     for (std::size_t p = 0; p < model.patterns.size(); ++p) platens_only_.push_back(model.driven_by_platens(static_cast<int>(p)));
@@ -171,7 +173,35 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
         for (int d = 0; d < dofs_per_node; ++d)
             if (rate[d] != 0.0 && equation_[base + d] >= 0) coupling_[equation_[base + d]] += rate[d];
     }
+    if (!self_contact_.empty()) {
+        self_contact_.evaluate(u, freeze_active, undecided_force_);
+        for (const SurfaceContact& c : self_contact_.contacts()) {
+            const std::array<int, 3> nodes = c.node_list();
+            for (int k = 0; k < c.nodes(); ++k) internal_.segment<2>(dofs_per_node * nodes[k]) += c.force.segment<2>(2 * k);
+        }
+        add_surface_blocks();
+    }
     return true;
+}
+
+void StructuralSystem::add_surface_blocks() {
+    bool added = false;
+    for (const SurfaceContact& c : self_contact_.contacts()) {
+        const std::array<int, 3> nodes = c.node_list();
+        if (surface_block_.count(nodes)) continue;
+        std::vector<int> block;
+        for (int k = 0; k < c.nodes(); ++k)
+            for (int d = 0; d < dofs_per_node; ++d) block.push_back(equation_[dofs_per_node * nodes[k] + d]);
+        surface_block_[nodes] = blocks_.size();
+        blocks_.push_back(std::move(block));
+        added = true;
+    }
+    if (added) assembler_ = BlockAssembler(free_count_, blocks_);
+}
+
+bool StructuralSystem::contact_settled() const {
+    return !foundation_.active_set_changed() && foundation_.active_set_consistent() &&
+           !self_contact_.active_set_changed() && self_contact_.active_set_consistent();
 }
 
 void StructuralSystem::name_non_finite(std::size_t e) const {
@@ -223,6 +253,17 @@ void StructuralSystem::assemble_tangent() const {
         assembler_.add(e, k);
     }
     for (std::size_t s = 0; s < foundation_.size(); ++s) assembler_.add(elements_.size() + s, foundation_.tangent(s));
+    Eigen::Matrix<double, 9, 9> surface;
+    for (const SurfaceContact& c : self_contact_.contacts()) {
+        // The pair's translations into its nodes' three DOFs (no moment: the normal passes
+        // through both centre lines).
+        surface.setZero();
+        for (int a = 0; a < c.nodes(); ++a)
+            for (int b = 0; b < c.nodes(); ++b) surface.block<2, 2>(3 * a, 3 * b) = c.tangent.block<2, 2>(2 * a, 2 * b);
+        const std::size_t block = surface_block_.at(c.node_list());
+        if (c.nodes() == 2) assembler_.add(block, surface.topLeftCorner<6, 6>());
+        else assembler_.add(block, surface);
+    }
     tangent_assembled_ = true;
     // Finite entries have a finite sum unless it overflows (no structure is that stiff): one sum
     // instead of a test of every element's entries. Only if it is not finite are the elements
@@ -370,6 +411,9 @@ void StructuralSystem::report(const Eigen::VectorXd& u, const Eigen::VectorXd& e
             in_contact[st.node] = true;
         }
     }
+    out.surface_contacts.clear();
+    for (const SurfaceContact& c : self_contact_.contacts())
+        out.surface_contacts.push_back({c.node, c.segment, c.xi, c.gap, {-c.force[0], -c.force[1]}});
     out.contact_length = 0.0;
     for (const ElementSpec& e : element_specs_) {
         if (!in_contact[e.node_i] || !in_contact[e.node_j]) continue;

@@ -7,12 +7,15 @@
 #include "analysis/hinge_allocation.hpp"
 #include "analysis/step_result.hpp"
 #include "contact/foundation.hpp"
+#include "contact/self_contact.hpp"
 #include "element/corotational_beam.hpp"
 #include "load/follower_pressure.hpp"
 #include "model/model.hpp"
 #include "solver/block_assembler.hpp"
 
 #include <Eigen/Dense>
+#include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -64,7 +67,14 @@ public:
     bool tangent_finite() const;
     const std::string& non_finite_where() const { return non_finite_where_; }
     const Foundation& foundation() const { return foundation_; }
-    void set_contact_undecided_force(double force) { foundation_.set_undecided_force(force); }
+    const SelfContact& self_contact() const { return self_contact_; }
+    void set_contact_undecided_force(double force) {
+        foundation_.set_undecided_force(force);
+        undecided_force_ = force;
+    }
+    // Whether the bases' and the surfaces' contact sets of the last evaluation are those its
+    // geometry gives, unchanged from the evaluation before.
+    bool contact_settled() const;
     // No load, no prescribed displacement: moving bases drive the structure.
     bool driven_by_platens() const { return driven_by_platens_; }
     // The forces the moving bases exert at the last evaluation (free DOFs).
@@ -112,6 +122,13 @@ private:
     std::vector<double> elastic_ea_; // per element: EA if neither hinges nor fibre sections, else 0
     std::vector<std::vector<int>> held_dofs_; // per element: its local DOFs that are supported or prescribed
     Foundation foundation_;
+    SelfContact self_contact_;
+    double undecided_force_ = 0.0;
+    // The assembler's blocks: elements, springs, then each pair of surfaces that has touched
+    // (node, segment ends), found by its nodes. A new pair widens the pattern once.
+    std::vector<std::vector<int>> blocks_;
+    std::map<std::array<int, 3>, std::size_t> surface_block_;
+    void add_surface_blocks();
     FollowerPressure pressure_;
     JointHinges joint_hinges_;
     std::vector<Eigen::VectorXd> pattern_loads_; // per pattern, the nodal loads

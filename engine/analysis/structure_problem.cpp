@@ -32,8 +32,7 @@ bool StructureProblem::evaluate(int iteration, bool release) {
 }
 
 bool StructureProblem::settled() const {
-    const Foundation& f = system_.foundation();
-    return !f.active_set_changed() && f.active_set_consistent() && system_.hinge_states_consistent();
+    return system_.contact_settled() && system_.hinge_states_consistent();
 }
 
 void StructureProblem::move(const Eigen::VectorXd& dx, double dlambda) {

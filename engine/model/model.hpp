@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -69,6 +70,10 @@ struct SectionSpec {
     int segments = 1;               // distributed: segments per element (inner nodes condensed)
     double segment_grading = 1.0;   // distributed: each segment's length over its outer neighbour's
     double mass_per_length = 0.0;   // density × area, for self weight
+    // The distance between the section's two surfaces (h, depth, diameter, thickness) where
+    // self-contact needs it; 0: that of the rectangle of the same A and I, √(12 I/A).
+    double depth = 0.0;
+    double surface_depth() const { return depth > 0.0 ? depth : std::sqrt(12.0 * inertia / area); }
 };
 
 struct ElementSpec {
@@ -76,6 +81,13 @@ struct ElementSpec {
     int node_j = 0;
     int section = 0;
     std::array<bool, 2> released{false, false}; // moment releases at node_i, node_j (a pin in the member)
+};
+
+// [[self_contact]]: the surfaces of these elements, at ± half their section's depth from the
+// centre line, do not pass through each other (frictionless, penalty; contact/self_contact.hpp).
+struct SelfContactSpec {
+    std::vector<int> elements;
+    double stiffness = 0.0; // force per unit penetration; 0: SelfContact's default from the members
 };
 
 struct Support {
@@ -208,6 +220,7 @@ struct Model {
     std::vector<ElementPressure> pressures;
     std::vector<PrescribedDisplacement> prescribed;
     std::vector<FoundationSpring> springs;
+    std::vector<SelfContactSpec> self_contact;
     std::vector<BaseLine> bases; // the rigid base lines of unilateral springs (FoundationSpring::base)
     std::vector<std::string> patterns{"main"}; // load pattern names, "main" first
     AnalysisSpec analysis;

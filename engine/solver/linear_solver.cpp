@@ -68,7 +68,12 @@ void LinearSolver::analyse_sparse(const SparseMatrix& K) {
 }
 
 bool LinearSolver::factorize(const SparseMatrix& K) {
-    if (!analysed_) analyse(K);
+    // A pattern only grows (surfaces that touch couple new nodes): a new count is a new pattern.
+    if (!analysed_ || K.nonZeros() != analysed_nonzeros_) {
+        analyse(K);
+        analysed_nonzeros_ = K.nonZeros();
+        lu_analysed_ = false;
+    }
     const double* values = K.valuePtr();
     bool nonzero_pivots = false;
     if (blocks_used_) {

@@ -1,3 +1,4 @@
+#include "arrow_scale.hpp"
 #include "flat_marks.hpp"
 #include "result_schema.hpp"
 #include "layers/layers.hpp"
@@ -8,7 +9,6 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <cmath>
-#include <cstdio>
 
 namespace plastica::render {
 
@@ -53,11 +53,7 @@ public:
         return {{LegendEntry::Mark::arrow, colour::contact_force, 0.0, "contact force"}};
     }
 
-    std::string note() const override {
-        char text[64];
-        std::snprintf(text, sizeof text, "%.4g", largest_);
-        return "longest: " + std::string(text) + (unit_.empty() ? "" : " " + unit_) + "\n(largest in the run)";
-    }
+    std::string note() const override { return longest_arrow_note(largest_, unit_); }
 
 private:
     double largest_;

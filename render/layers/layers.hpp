@@ -25,6 +25,9 @@ std::unique_ptr<Layer> initial_shape_layer(vtkUnstructuredGrid* first_step);
 std::unique_ptr<Layer> base_layer(const SeriesSummary& summary, vtkPolyData* base);
 // Contact forces of the base as arrows whose tips touch the structure.
 std::unique_ptr<Layer> contact_layer(const SeriesSummary& summary);
+// Forces between surfaces in contact ([[self_contact]]): arrows from each pressed node along
+// the push it takes.
+std::unique_ptr<Layer> surface_contact_layer(const SeriesSummary& summary);
 // Plastic hinges at element ends: yielding (gold to orange by utilisation), fully plastic,
 // failed fibres.
 std::unique_ptr<Layer> hinge_layer(const SeriesSummary& summary);

@@ -1,0 +1,241 @@
+#include "contact/self_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <queue>
+#include <tuple>
+
+namespace plastica {
+
+namespace {
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a[0] * b[1] - a[1] * b[0]; }
+
+// The nodes within `radius` of `from` along the elements (undeformed lengths), sorted.
+std::vector<int> nodes_within(int from, double radius, const std::vector<std::vector<std::pair<int, double>>>& links) {
+    std::map<int, double> reached{{from, 0.0}};
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    open.push({0.0, from});
+    while (!open.empty()) {
+        const auto [distance, node] = open.top();
+        open.pop();
+        if (distance > reached[node]) continue;
+        for (const auto& [next, length] : links[static_cast<std::size_t>(node)]) {
+            const double further = distance + length;
+            if (further > radius) continue;
+            auto it = reached.find(next);
+            if (it != reached.end() && it->second <= further) continue;
+            reached[next] = further;
+            open.push({further, next});
+        }
+    }
+    std::vector<int> out;
+    for (const auto& entry : reached) out.push_back(entry.first);
+    return out;
+}
+
+using Key = std::tuple<int, int, int>;
+Key key_of(const SurfaceContact& c) { return {c.node, c.segment[0], c.segment[1]}; }
+
+} // namespace
+
+double SelfContact::default_stiffness(const Model& model, const std::vector<int>& elements) {
+    double k = 0.0;
+    for (int e : elements) {
+        const ElementSpec& spec = model.elements[static_cast<std::size_t>(e)];
+        const Node &a = model.nodes[static_cast<std::size_t>(spec.node_i)], &b = model.nodes[static_cast<std::size_t>(spec.node_j)];
+        const SectionSpec& s = model.sections[static_cast<std::size_t>(spec.section)];
+        k = std::max(k, s.E * s.area / std::hypot(b.x - a.x, b.y - a.y));
+    }
+    return k;
+}
+
+SelfContact::SelfContact(const Model& model) {
+    for (const Node& n : model.nodes) {
+        x0_.push_back(n.x);
+        x0_.push_back(n.y);
+    }
+    for (const SelfContactSpec& spec : model.self_contact) {
+        Group g;
+        g.stiffness = spec.stiffness > 0.0 ? spec.stiffness : default_stiffness(model, spec.elements);
+        std::map<int, double> half_depth; // per node, the deepest section meeting there
+        std::vector<std::vector<std::pair<int, double>>> links(model.nodes.size());
+        double deepest = 0.0;
+        for (int e : spec.elements) {
+            const ElementSpec& el = model.elements[static_cast<std::size_t>(e)];
+            const double h = 0.5 * model.sections[static_cast<std::size_t>(el.section)].surface_depth();
+            g.segments.push_back({el.node_i, el.node_j, h});
+            deepest = std::max(deepest, 2.0 * h);
+            for (int node : {el.node_i, el.node_j}) half_depth[node] = std::max(half_depth[node], h);
+            const Node &a = model.nodes[static_cast<std::size_t>(el.node_i)], &b = model.nodes[static_cast<std::size_t>(el.node_j)];
+            const double length = std::hypot(b.x - a.x, b.y - a.y);
+            links[static_cast<std::size_t>(el.node_i)].push_back({el.node_j, length});
+            links[static_cast<std::size_t>(el.node_j)].push_back({el.node_i, length});
+        }
+        // Two points of one member touch only across a fold: the tightest fold (inner surface
+        // of radius 0) puts facing points half a turn of radius c/2 apart along the centre line,
+        // π·c/2. Nearer points are neighbours, never contact; twice the reach leaves a margin.
+        const double radius = 2.0 * deepest;
+        for (const auto& [node, h] : half_depth) {
+            g.nodes.push_back(node);
+            g.node_half_depth.push_back(h);
+            g.near.push_back(nodes_within(node, radius, links));
+        }
+        groups_.push_back(std::move(g));
+    }
+}
+
+bool SelfContact::touch(const Group& group, std::size_t p, const Segment& s, SurfaceContact& out) const {
+    const int node = group.nodes[p];
+    const std::vector<int>& near = group.near[p];
+    if (std::binary_search(near.begin(), near.end(), s.a) || std::binary_search(near.begin(), near.end(), s.b)) return false;
+    const Eigen::Vector2d x = position(node), a = position(s.a), b = position(s.b);
+    const double reach = group.node_half_depth[p] + s.half_depth;
+    // Cheap rejection first: the node is farther than the reach from the segment's box.
+    if (x[0] < std::min(a[0], b[0]) - reach || x[0] > std::max(a[0], b[0]) + reach ||
+        x[1] < std::min(a[1], b[1]) - reach || x[1] > std::max(a[1], b[1]) + reach)
+        return false;
+    const Eigen::Vector2d e = b - a;
+    const double xi = std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    const Eigen::Vector2d toward = x - (a + xi * e);
+    const double distance = toward.norm();
+    // Centre lines that meet have no normal: the crossing check stops such a run.
+    if (distance - reach > 0.0 || distance <= 1e-9 * reach) return false;
+    out.node = node;
+    out.segment = xi <= 0.0 ? std::array<int, 2>{s.a, s.a} : xi >= 1.0 ? std::array<int, 2>{s.b, s.b} : std::array<int, 2>{s.a, s.b};
+    out.xi = xi;
+    out.reach = reach;
+    out.gap = distance - reach;
+    out.stiffness = group.stiffness;
+    out.normal = toward / distance;
+    return true;
+}
+
+void SelfContact::evaluate_pair(SurfaceContact& c) const {
+    // Π = ½·k·g², g = d − reach: force k·g·∇d, tangent k·∇d∇dᵀ + k·g·∇²d.
+    const Eigen::Vector2d x = position(c.node);
+    Vector6 grad = Vector6::Zero();
+    Matrix6 hess = Matrix6::Zero();
+    if (c.nodes() == 2) {
+        const Eigen::Vector2d d = x - position(c.segment[0]);
+        const double distance = d.norm();
+        c.gap = distance - c.reach;
+        c.normal = d / distance;
+        grad.head<2>() = c.normal;
+        grad.segment<2>(2) = -c.normal;
+        const Eigen::Matrix2d q = (Eigen::Matrix2d::Identity() - c.normal * c.normal.transpose()) / distance;
+        hess.block<2, 2>(0, 0) = q;
+        hess.block<2, 2>(0, 2) = -q;
+        hess.block<2, 2>(2, 0) = -q;
+        hess.block<2, 2>(2, 2) = q;
+    } else {
+        // d = σ·A/L, A = e × r the doubled area of (a, b, x), e = b − a, r = x − a, L = |e|.
+        const Eigen::Vector2d a = position(c.segment[0]), b = position(c.segment[1]);
+        const Eigen::Vector2d e = b - a, r = x - a;
+        const double L = e.norm(), area = cross(e, r);
+        const double sigma = area >= 0.0 ? 1.0 : -1.0;
+        const Eigen::Vector2d t = e / L;
+        const Eigen::Vector2d je(-e[1], e[0]), jr(-r[1], r[0]);
+        // Over (x, a, b): ∂e = (0, −I, I), ∂r = (I, −I, 0).
+        const double ce[3] = {0.0, -1.0, 1.0}, cr[3] = {1.0, -1.0, 0.0};
+        Vector6 grad_area, grad_length;
+        grad_area << je, jr - je, -jr;
+        for (int i = 0; i < 3; ++i) grad_length.segment<2>(2 * i) = ce[i] * t;
+        Eigen::Matrix2d m;
+        m << 0.0, 1.0, -1.0, 0.0; // A = eᵀ·m·r
+        const Eigen::Matrix2d p = (Eigen::Matrix2d::Identity() - t * t.transpose()) / L;
+        Matrix6 hess_area, hess_length;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                hess_area.block<2, 2>(2 * i, 2 * j) = ce[i] * cr[j] * m + cr[i] * ce[j] * m.transpose();
+                hess_length.block<2, 2>(2 * i, 2 * j) = ce[i] * ce[j] * p;
+            }
+        c.gap = sigma * area / L - c.reach;
+        grad = sigma * (grad_area / L - area * grad_length / (L * L));
+        hess = sigma * (hess_area / L - (grad_area * grad_length.transpose() + grad_length * grad_area.transpose()) / (L * L) -
+                        area * hess_length / (L * L) + 2.0 * area * grad_length * grad_length.transpose() / (L * L * L));
+        c.normal = sigma * Eigen::Vector2d(-t[1], t[0]);
+    }
+    c.force = c.stiffness * c.gap * grad;
+    c.tangent = c.stiffness * (grad * grad.transpose() + c.gap * hess);
+}
+
+void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double undecided_force) {
+    u_ = u.data();
+    std::vector<SurfaceContact> found;
+    SurfaceContact c;
+    for (const Group& g : groups_)
+        for (std::size_t p = 0; p < g.nodes.size(); ++p) {
+            const std::size_t first = found.size();
+            for (const Segment& s : g.segments)
+                if (touch(g, p, s, c)) found.push_back(c);
+            // One contact per segment end, and none at an end where the node touches the
+            // interior of a segment that ends there (that one is nearer or as near).
+            auto end_is_served = [&](std::size_t k) {
+                const SurfaceContact& ck = found[k];
+                if (ck.nodes() != 2) return false;
+                for (std::size_t m = first; m < found.size(); ++m) {
+                    if (m == k) continue;
+                    const SurfaceContact& cm = found[m];
+                    if (cm.nodes() == 3 && (cm.segment[0] == ck.segment[0] || cm.segment[1] == ck.segment[0])) return true;
+                    if (cm.nodes() == 2 && cm.segment[0] == ck.segment[0] && m < k) return true;
+                }
+                return false;
+            };
+            std::vector<SurfaceContact> kept;
+            for (std::size_t k = first; k < found.size(); ++k)
+                if (!end_is_served(k)) kept.push_back(found[k]);
+            found.resize(first);
+            found.insert(found.end(), kept.begin(), kept.end());
+        }
+
+    // Two segment ends that touch each other are one contact, though each pass finds it.
+    {
+        std::map<Key, bool> ends;
+        for (const SurfaceContact& f : found)
+            if (f.nodes() == 2) ends[key_of(f)] = true;
+        found.erase(std::remove_if(found.begin(), found.end(),
+                                   [&](const SurfaceContact& f) {
+                                       return f.nodes() == 2 && f.node > f.segment[0] &&
+                                              ends.count({f.segment[0], f.node, f.node});
+                                   }),
+                    found.end());
+    }
+    std::map<Key, const SurfaceContact*> now;
+    for (const SurfaceContact& f : found) now[key_of(f)] = &f;
+    std::map<Key, const SurfaceContact*> before;
+    for (const SurfaceContact& f : contacts_) before[key_of(f)] = &f;
+
+    // A pair whose force at its gap is within the undecided band keeps its previous state.
+    std::vector<SurfaceContact> acting;
+    consistent_ = true;
+    for (const SurfaceContact& f : found) {
+        const bool was = before.count(key_of(f)) > 0;
+        const bool small = f.stiffness * std::abs(f.gap) <= undecided_force;
+        if (freeze_active ? was : (was || !small)) acting.push_back(f);
+        else if (!small) consistent_ = false; // a new touch the frozen set leaves out
+    }
+    // Previous pairs that opened: kept while frozen, or while undecided, at their old kind.
+    for (const SurfaceContact& f : contacts_) {
+        if (now.count(key_of(f))) continue;
+        SurfaceContact kept = f;
+        evaluate_pair(kept);
+        const bool small = kept.stiffness * std::abs(kept.gap) <= undecided_force;
+        if (freeze_active || small) acting.push_back(kept);
+        if (freeze_active && !small) consistent_ = false;
+    }
+    for (SurfaceContact& a : acting) evaluate_pair(a);
+    std::map<Key, bool> after;
+    for (const SurfaceContact& a : acting) after[key_of(a)] = true;
+    changed_ = after.size() != before.size() ||
+               !std::equal(after.begin(), after.end(), before.begin(), [](const auto& x, const auto& y) { return x.first == y.first; });
+    contacts_ = std::move(acting);
+}
+
+} // namespace plastica

@@ -1,0 +1,87 @@
+// Frictionless contact between the surfaces of members (a ring flattened until its walls meet,
+// a pipe pressed onto a pipe), by the penalty method. Each surface lies half its section's depth
+// from the centre line, so two centre lines may come no nearer than the sum of their half depths,
+// the reach c. Every node is tested against every segment (element chord) of its group that is
+// not its neighbour along the members: with d the distance from the node to the segment (to its
+// nearest point, interior or end), the gap is g = d − c and a pair with g ≤ 0 carries the
+// potential ½·k·g². Its gradient is the internal force, its Hessian (including the term from the
+// turning normal) the tangent, on the translations of the node and the segment's ends
+// (Wriggers, Computational Contact Mechanics, 2006, ch. 4: node-to-segment contact; here the
+// two-pass form, each node against the other surface). A node whose nearest point is a segment
+// end touches that end once, however many segments end there.
+#pragma once
+
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+#include <vector>
+
+namespace plastica {
+
+struct SurfaceContact {
+    int node = 0;               // the node that touches
+    std::array<int, 2> segment; // the ends of the segment it touches; both the same for an end
+    double xi = 0.0;            // where along the segment, 0 … 1
+    double reach = 0.0;         // the sum of the two half depths
+    double gap = 0.0;           // distance − reach: negative, the penetration
+    double stiffness = 0.0;
+    Eigen::Vector2d normal;     // unit, from the segment toward the node
+    // Internal force on the translations (x, y) of node, segment[0], segment[1] (6 entries; an
+    // end contact uses the first four), and its tangent.
+    Eigen::Matrix<double, 6, 1> force;
+    Eigen::Matrix<double, 6, 6> tangent;
+    int nodes() const { return segment[0] == segment[1] ? 2 : 3; }
+    // The nodes the force and tangent act on, in their order.
+    std::array<int, 3> node_list() const { return {node, segment[0], segment[1]}; }
+};
+
+class SelfContact {
+public:
+    explicit SelfContact(const Model& model);
+
+    bool empty() const { return groups_.empty(); }
+
+    // Finds the touching pairs at the full displacement vector u and evaluates them. With
+    // freeze_active the pairs of the previous evaluation act (even where they opened) and no
+    // new pair is taken. A pair whose force at its gap would be at most undecided_force keeps
+    // its state (the foundation's rule: no flipping on round-off).
+    void evaluate(const Eigen::VectorXd& u, bool freeze_active, double undecided_force);
+    const std::vector<SurfaceContact>& contacts() const { return contacts_; }
+    bool active_set_changed() const { return changed_; }
+    // Whether the acting pairs are those the geometry gives (they are unless frozen and stale).
+    bool active_set_consistent() const { return consistent_; }
+
+    // A group's penalty unless the scene names one: the largest axial stiffness E·A/ℓ of its
+    // elements. A node pressed by it moves into the surface as far as one element's end would
+    // shorten under the same force, so contact adds no stiffness beyond what the members have
+    // (the tangent's conditioning is kept) while the penetration stays that of an axial strain.
+    static double default_stiffness(const Model& model, const std::vector<int>& elements);
+
+private:
+    struct Segment {
+        int a = 0, b = 0;
+        double half_depth = 0.0;
+    };
+    struct Group {
+        std::vector<Segment> segments;
+        std::vector<int> nodes;
+        std::vector<double> node_half_depth; // per entry of nodes: the deepest section there
+        // Per entry of nodes: the nodes nearer along the members than they could ever touch.
+        std::vector<std::vector<int>> near;
+        double stiffness = 0.0;
+    };
+    // The nearest point of segment s to node p; false if the pair does not touch.
+    bool touch(const Group& group, std::size_t p, const Segment& s, SurfaceContact& out) const;
+    // Its gap, normal, force and tangent at the current positions (the pair's kind kept).
+    void evaluate_pair(SurfaceContact& c) const;
+    Eigen::Vector2d position(int node) const { return {x0_[2 * node] + u_[3 * node], x0_[2 * node + 1] + u_[3 * node + 1]}; }
+
+    std::vector<Group> groups_;
+    std::vector<double> x0_; // initial positions, x y per node
+    const double* u_ = nullptr;
+    std::vector<SurfaceContact> contacts_;
+    bool changed_ = false, consistent_ = true;
+};
+
+} // namespace plastica
