@@ -181,3 +181,36 @@ TEST_CASE("A steel pipe ring flattened between plates stops where its walls meet
     CHECK(up == Approx(-down).epsilon(1e-6));
     CHECK(2.0 * up == Approx(last.load).epsilon(1e-6));
 }
+
+TEST_CASE("A ring pressed onto a ring shortens as two rings in series", "[contact][self_contact]") {
+    // Each ring is pinched by two opposite forces P: δ_ring = (π/4 − 2/π)·P R³/EI (Castigliano).
+    // In series with the two plates' penalty (1200, halved on the symmetry line of the half
+    // model) and the rings' contact penalty (100·12EI/ℓ³ = 4800 on the half model's P/2).
+    const Run two = run_scene_file("tests/contact/two_rings_stacked.toml");
+    INFO(two.summary.reason);
+    REQUIRE(two.summary.status == RunStatus::completed);
+    const double R = 100.0, EI = 1e3, ring = (M_PI / 4.0 - 2.0 / M_PI) * R * R * R / EI;
+    const double plates = 2.0 / 1200.0, contact = 1.0 / (2.0 * 4800.0);
+    const StepResult& first = two.steps[1];
+    REQUIRE(first.surface_contacts.size() == 1);
+    // The rings touch on the symmetry line, pressed with the half model's P/2 (to the residual
+    // the steps are accepted with, 1e-6 of the load per DOF, summed over the ring's 51 nodes).
+    CHECK(std::hypot(first.surface_contacts[0].force[0], first.surface_contacts[0].force[1]) ==
+          Approx(first.load / 2.0).epsilon(1e-4));
+    // δ/R = 5e-5: the 50 chords of each half ring make a ring 8e-4 stiffer than Castigliano's;
+    // the single ring between the same plates shows the same (models/gallery/ring_between_plates.toml).
+    const double flexibility = first.load_factor / first.load;
+    CHECK(flexibility == Approx(2.0 * ring + plates + contact).epsilon(1e-3));
+    // Against that single ring, measured: the contact between the rings adds only its penalty.
+    std::string one = scene_file_text("models/gallery/ring_between_plates.toml");
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"increment = 0.5", "increment = 0.005"},
+                                   {"target_load_factor = 120.0", "target_load_factor = 0.005"},
+                                   {"residual_tolerance = 1e-5", ""}})
+        one.replace(one.find(from), from.size(), to);
+    const Run single = run_scene(one);
+    REQUIRE(single.summary.status == RunStatus::completed);
+    const double single_ring = single.steps[1].load_factor / single.steps[1].load - plates;
+    CHECK(flexibility == Approx(2.0 * single_ring + plates + contact).epsilon(1e-4));
+    for (const StepResult& s : two.steps)
+        if (s.step > 0) CHECK(s.load_factor / s.load == Approx(flexibility).epsilon(1e-3));
+}

@@ -41,6 +41,10 @@ std::vector<int> nodes_within(int from, double radius, const std::vector<std::ve
 }
 
 using Key = std::tuple<int, int, int>;
+
+// A pair whose force at its gap is within the band keeps its state; without a band (the first
+// evaluation) the geometry alone decides, so surfaces that start touching touch.
+bool undecided(const SurfaceContact& c, double band) { return band > 0.0 && c.stiffness * std::abs(c.gap) <= band; }
 Key key_of(const SurfaceContact& c) { return {c.node, c.segment[0], c.segment[1]}; }
 
 } // namespace
@@ -51,7 +55,8 @@ double SelfContact::default_stiffness(const Model& model, const std::vector<int>
         const ElementSpec& spec = model.elements[static_cast<std::size_t>(e)];
         const Node &a = model.nodes[static_cast<std::size_t>(spec.node_i)], &b = model.nodes[static_cast<std::size_t>(spec.node_j)];
         const SectionSpec& s = model.sections[static_cast<std::size_t>(spec.section)];
-        k = std::max(k, s.E * s.area / std::hypot(b.x - a.x, b.y - a.y));
+        const double length = std::hypot(b.x - a.x, b.y - a.y);
+        k = std::max(k, std::min(s.E * s.area / length, 100.0 * 12.0 * s.E * s.inertia / (length * length * length)));
     }
     return k;
 }
@@ -217,7 +222,7 @@ void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double 
     consistent_ = true;
     for (const SurfaceContact& f : found) {
         const bool was = before.count(key_of(f)) > 0;
-        const bool small = f.stiffness * std::abs(f.gap) <= undecided_force;
+        const bool small = undecided(f, undecided_force);
         if (freeze_active ? was : (was || !small)) acting.push_back(f);
         else if (!small) consistent_ = false; // a new touch the frozen set leaves out
     }
@@ -226,7 +231,7 @@ void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double 
         if (now.count(key_of(f))) continue;
         SurfaceContact kept = f;
         evaluate_pair(kept);
-        const bool small = kept.stiffness * std::abs(kept.gap) <= undecided_force;
+        const bool small = undecided(kept, undecided_force);
         if (freeze_active || small) acting.push_back(kept);
         if (freeze_active && !small) consistent_ = false;
     }

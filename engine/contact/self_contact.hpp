@@ -52,10 +52,12 @@ public:
     // Whether the acting pairs are those the geometry gives (they are unless frozen and stale).
     bool active_set_consistent() const { return consistent_; }
 
-    // A group's penalty unless the scene names one: the largest axial stiffness E·A/ℓ of its
-    // elements. A node pressed by it moves into the surface as far as one element's end would
-    // shorten under the same force, so contact adds no stiffness beyond what the members have
-    // (the tangent's conditioning is kept) while the penetration stays that of an axial strain.
+    // A group's penalty unless the scene names one: over its elements the largest of the
+    // smaller of E·A/ℓ and 100·12·E·I/ℓ³. A node pressed by it sinks into the surface no more
+    // than an element end shortens under the same force, nor more than a hundredth of what an
+    // element bends under it: contact adds little stiffness beyond what the members have (the
+    // tangent's conditioning is kept, also for a slender member whose E·A/ℓ dwarfs its bending),
+    // while the penetration stays below the members' own local deformation.
     static double default_stiffness(const Model& model, const std::vector<int>& elements);
 
 private:
