@@ -24,6 +24,13 @@ using namespace plastica::render;
 
 namespace {
 
+// The bytes of a file that must exist: two missing files would otherwise compare equal.
+std::string file_bytes(const fs::path& p) {
+    REQUIRE(fs::is_regular_file(p));
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 RenderOptions small(const fs::path& out, int every = 1) {
     RenderOptions o;
     o.output = out.string();
@@ -344,12 +351,8 @@ TEST_CASE("The same frame drawn twice is the same PNG, byte for byte", "[render]
     const fs::path series = solved_series("ring_inelastic", 100, "twice");
     render_series(series.string(), small(series / "a"));
     render_series(series.string(), small(series / "b"));
-    auto bytes = [](const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
     for (const char* name : {"frames/frame_000100.png", "frames/frame_000200.png", "chart.png"})
-        CHECK(bytes(series / "a" / name) == bytes(series / "b" / name));
+        CHECK(file_bytes(series / "a" / name) == file_bytes(series / "b" / name));
 }
 
 TEST_CASE("Frames drawn by several processes are the bytes one process draws", "[render]") {
@@ -363,10 +366,7 @@ TEST_CASE("Frames drawn by several processes are the bytes one process draws", "
     const RenderReport report = render_series(series.string(), parallel);
     CHECK(report.workers == 3);
     CHECK(render_series(series.string(), serial).workers == 1);
-    auto bytes = [](const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
+    const auto bytes = file_bytes;
     int frames = 0;
     for (const auto& entry : fs::directory_iterator(series / "serial" / "frames")) {
         ++frames;
