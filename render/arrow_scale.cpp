@@ -49,7 +49,17 @@ void ArrowLabels::add(const double tail[2], double dx, double dy, const std::str
     p->SetJustification(ux > 0.5 ? VTK_TEXT_RIGHT : ux < -0.5 ? VTK_TEXT_LEFT : VTK_TEXT_CENTERED);
     p->SetVerticalJustification(uy > 0.5 ? VTK_TEXT_TOP : uy < -0.5 ? VTK_TEXT_BOTTOM : VTK_TEXT_CENTERED);
     actor->SetInput(text.c_str());
-    actor->SetPosition(tail[0] - gap * ux, tail[1] - gap * uy);
+    double x = tail[0] - gap * ux, y = tail[1] - gap * uy;
+    // A value that would run off the picture's side (a sway load at the frame's edge) sits
+    // above its arrow instead, from the tail inward.
+    const double width = view_.pixels(text_width(p, text));
+    if ((ux > 0.5 && x - width < view_.view[0]) || (ux < -0.5 && x + width > view_.drawing_right)) {
+        p->SetJustification(ux > 0.5 ? VTK_TEXT_LEFT : VTK_TEXT_RIGHT);
+        p->SetVerticalJustification(VTK_TEXT_BOTTOM);
+        x = tail[0];
+        y = tail[1] + gap;
+    }
+    actor->SetPosition(x, y);
     actor->SetVisibility(true);
 }
 

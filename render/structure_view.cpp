@@ -19,7 +19,6 @@
 #include <vtkRibbonFilter.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
-#include <vtkTextRenderer.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform.h>
 #include <vtkUnstructuredGrid.h>
@@ -149,35 +148,7 @@ void StructureView::add_with_mirror(vtkProp* prop, bool mirror) {
     renderer_->AddActor(mirrored(actor, summary_.mirror_x));
 }
 
-void StructureView::add_colour_bar(double text_scale) {
-    colour_bar_->SetLookupTable(colours_);
-    // The unit on a line of its own: the column is narrow.
-    const std::string unit = array_unit(summary_, summary_.field.name);
-    colour_bar_->SetTitle((readable(summary_.field.name) + (unit.empty() ? "" : "\n(" + unit + ")")).c_str());
-    colour_bar_->SetNumberOfLabels(5);
-    colour_bar_->SetLabelFormat("%-8.3g"); // 255, not "255."
-    colour_bar_->SetOrientationToVertical();
-    colour_bar_->UnconstrainedFontSizeOn();
-    colour_bar_->SetBarRatio(0.22);
-    colour_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    colour_bar_->GetPositionCoordinate()->SetValue(1.0 - side_column + 0.03, 0.50);
-    colour_bar_->SetWidth(side_column - 0.05);
-    colour_bar_->SetHeight(0.45);
-    colour_bar_->SetTextPositionToPrecedeScalarBar();
-    colour_bar_->SetTextPositionToSucceedScalarBar();
-    style_text(colour_bar_->GetTitleTextProperty(), 15 * text_scale, true);
-    style_text(colour_bar_->GetLabelTextProperty(), 13 * text_scale);
-    colour_bar_->GetTitleTextProperty()->SetJustificationToLeft();
-    renderer_->AddViewProp(colour_bar_);
-}
-
 namespace {
-
-double text_width(vtkTextProperty* property, const std::string& text) {
-    int box[4];
-    vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
-    return measure && measure->GetBoundingBox(property, text, box, 72) ? box[1] - box[0] : 0.0;
-}
 
 // The text broken at spaces into lines no wider than `room` pixels, and then, where one word
 // alone is wider, a smaller font: the legend column of a small picture (a contact sheet's tile)
@@ -206,6 +177,31 @@ std::string fit_width(vtkTextProperty* property, const std::string& text, double
 }
 
 } // namespace
+
+void StructureView::add_colour_bar(double text_scale) {
+    colour_bar_->SetLookupTable(colours_);
+    colour_bar_->SetNumberOfLabels(5);
+    colour_bar_->SetLabelFormat("%-8.3g"); // 255, not "255."
+    colour_bar_->SetOrientationToVertical();
+    colour_bar_->UnconstrainedFontSizeOn();
+    colour_bar_->SetBarRatio(0.22);
+    colour_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    colour_bar_->GetPositionCoordinate()->SetValue(1.0 - side_column + 0.03, 0.50);
+    colour_bar_->SetWidth(side_column - 0.05);
+    colour_bar_->SetHeight(0.45);
+    colour_bar_->SetTextPositionToPrecedeScalarBar();
+    colour_bar_->SetTextPositionToSucceedScalarBar();
+    style_text(colour_bar_->GetTitleTextProperty(), 15 * text_scale, true);
+    style_text(colour_bar_->GetLabelTextProperty(), 13 * text_scale);
+    colour_bar_->GetTitleTextProperty()->SetJustificationToLeft();
+    // The unit on a line of its own, and the name broken where the column is too narrow for it
+    // (a contact sheet's tile): the column from the bar's left edge to the picture's.
+    const std::string unit = array_unit(summary_, summary_.field.name);
+    const double room = (side_column - 0.03) * viewport_.width_px;
+    colour_bar_->SetTitle((fit_width(colour_bar_->GetTitleTextProperty(), readable(summary_.field.name), room) +
+                           (unit.empty() ? "" : "\n(" + unit + ")")).c_str());
+    renderer_->AddViewProp(colour_bar_);
+}
 
 void StructureView::add_legend(double text_scale) {
     // Smaller, where the entries of a small picture (a contact sheet's tile) would run off its foot.

@@ -2,7 +2,9 @@
 #include "palette.hpp"
 
 #include <vtkActor.h>
+#include <vtkStdString.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 #include <vtkTransform.h>
 
 #include <cmath>
@@ -23,6 +25,12 @@ void use_text_font(vtkTextProperty* p, bool bold) {
     }
     p->SetFontFamily(VTK_FONT_FILE);
     p->SetFontFile(bold ? heavy : regular);
+}
+
+double text_width(vtkTextProperty* p, const std::string& text) {
+    int box[4];
+    vtkTextRenderer* measure = vtkTextRenderer::GetInstance();
+    return measure && measure->GetBoundingBox(p, vtkStdString(text), box, 72) ? box[1] - box[0] : 0.0;
 }
 
 void style_text(vtkTextProperty* p, double size, bool bold) {
