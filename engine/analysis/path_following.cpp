@@ -2,6 +2,7 @@
 
 #include "analysis/increment_constraints.hpp"
 #include "analysis/penetration_check.hpp"
+#include "analysis/stop_diagnosis.hpp"
 #include "analysis/structure_problem.hpp"
 #include "model/rigid_motions.hpp"
 
@@ -21,8 +22,6 @@ constexpr double max_turn_cosine = 0.95;
 // A step that failed after three cuts with a round-off floor this many times the residual
 // tolerance stops the run: no smaller increment lowers that floor.
 constexpr double hopeless_floor = 1e3;
-// How far into its yielding range (in |M|/M_p) one adaptive increment may carry a hinge section.
-constexpr double max_yield_advance = 0.05;
 
 double dof_value(const DofRef& c, const Eigen::VectorXd& u) {
     return c.sign * u[dofs_per_node * c.node + c.dof];
@@ -268,6 +267,12 @@ std::string PathFollowing::probe_contact_mechanism(const Eigen::VectorXd& u_conv
     return contact_mechanism();
 }
 
+void PathFollowing::roll_back(const Eigen::VectorXd& u_saved, double lambda_saved) {
+    u_ = u_saved;
+    lambda_ = lambda_saved;
+    system_.revert();
+}
+
 void PathFollowing::remember_contact() {
     const std::vector<SpringState>& states = system_.foundation().states();
     committed_contact_.resize(states.size());
@@ -361,14 +366,10 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
         // Land on the target instead of overshooting it (load and displacement control).
         double step_h = h;
-        if (a.scheme == Scheme::load_control && a.target_load_factor) {
-            const double remaining = *a.target_load_factor - lambda_;
-            if (std::abs(step_h) > std::abs(remaining)) step_h = remaining;
-        }
-        if (a.scheme == Scheme::displacement_control && a.target_displacement) {
-            const double remaining = *a.target_displacement - control_value(u_);
-            if (std::abs(step_h) > std::abs(remaining)) step_h = remaining;
-        }
+        if (a.scheme == Scheme::load_control && a.target_load_factor)
+            step_h = StepController::landing(step_h, *a.target_load_factor - lambda_);
+        if (a.scheme == Scheme::displacement_control && a.target_displacement)
+            step_h = StepController::landing(step_h, *a.target_displacement - control_value(u_));
         const Eigen::VectorXd u_saved = u_;
         const double lambda_saved = lambda_;
         NewtonResult outcome = attempt_increment(step_h, control, true);
@@ -376,18 +377,14 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             // The extrapolation may overshoot a kink of the path (a hinge or contact that
             // appears in this step): try the tangent's predictor before cutting the step.
             summary.iterations += outcome.iterations;
-            u_ = u_saved;
-            lambda_ = lambda_saved;
-            system_.revert();
+            roll_back(u_saved, lambda_saved);
             outcome = attempt_increment(step_h, control, false);
         }
         // An arc-length step past the stage's target is taken again from where it started, under
         // the control that lands on the target exactly (a step that fails to land is cut).
         if (outcome.converged() && a.scheme == Scheme::arc_length && past_target() > target_slack()) {
             summary.iterations += outcome.iterations;
-            u_ = u_saved;
-            lambda_ = lambda_saved;
-            system_.revert();
+            roll_back(u_saved, lambda_saved);
             const double remaining = a.target_load_factor ? *a.target_load_factor - lambda_ : *a.target_displacement - control_value(u_);
             outcome = attempt_increment(remaining, control, false, a.target_load_factor ? Scheme::load_control : Scheme::displacement_control);
         }
@@ -426,46 +423,30 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
                                       " negative pivot(s)";
                 beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit();
             }
-            u_ = u_saved;
-            lambda_ = lambda_saved;
-            system_.revert();
+            roll_back(u_saved, lambda_saved);
             ++summary.cut_steps;
-            steps_since_cut_ = 0;
-            h = 0.5 * step_h;
+            h = steps_.after_failure(step_h);
             if (!giving_up) continue;
-            summary.status = RunStatus::no_convergence;
-            std::ostringstream why;
             system_.evaluate(u_, ubar_, lambda_, false); // leave the system at the last converged state
-            if (outcome.failure == NewtonFailure::non_finite) {
-                summary.status = RunStatus::non_finite;
-                why << "non-finite state in step " << step_ + 1;
-                if (!system_.non_finite_where().empty()) why << " at " << system_.non_finite_where();
-            } else if (!mechanism.empty()) {
-                why << "the structure became a mechanism in step " << step_ + 1 << " at load factor " << lambda_ << ": "
-                    << mechanism;
-            } else if (beyond_limit || (can_be_limit && tangent_shows_limit())) {
-                summary.status = RunStatus::limit_load;
-                why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
-            } else {
-                why << "no convergence in step " << step_ + 1 << " at load factor " << lambda_ << " ("
-                    << to_string(outcome.failure);
-                if (hopeless) why << ", no smaller increment can help";
-                else why << " with the increment cut to " << std::abs(h);
-                why << "; the residual ended at " << outcome.residual << " of the load, residual_tolerance "
-                    << a.residual_tolerance << ")";
-                if (!a.residual_tolerance_follows_floor && floor_at_failure.total >= 0.1 * a.residual_tolerance) {
-                    why << ": round-off alone leaves about " << floor_at_failure.total
-                        << " of the load out of balance in this model (its stiffest terms times the rounding "
-                           "of its displacements), so the tolerance cannot be met; ";
-                    if (floor_at_failure.from_springs >= 0.5 * floor_at_failure.total)
-                        why << "most of it comes from the foundation's penalty stiffness: lower it (the "
-                               "penetration falls as 1/k, so 1e4 to 1e6 times EI/L³ is plenty), or set a "
-                               "residual_tolerance above that";
-                    else
-                        why << "use fewer or longer elements, or a residual_tolerance above that";
-                }
-            }
-            summary.reason = why.str();
+            FailedStep failed;
+            failed.step = step_ + 1;
+            failed.load_factor = lambda_;
+            failed.failure = outcome.failure;
+            failed.non_finite_where = system_.non_finite_where();
+            failed.mechanism = mechanism;
+            // The tangent is read for a limit only where nothing else explains the failure.
+            failed.limit = outcome.failure != NewtonFailure::non_finite && mechanism.empty() &&
+                           (beyond_limit || (can_be_limit && tangent_shows_limit()));
+            failed.limit_evidence = limit_evidence_;
+            failed.hopeless = hopeless;
+            failed.increment = h;
+            failed.residual = outcome.residual;
+            failed.tolerance = a.residual_tolerance;
+            failed.tolerance_follows_floor = a.residual_tolerance_follows_floor;
+            failed.floor = floor_at_failure;
+            const StopReason stop = diagnose_failed_step(failed);
+            summary.status = stop.status;
+            summary.reason = stop.reason;
             break;
         }
         // Adaptive increments also bound the error of the hinges' explicit pseudo-springs (η from
@@ -474,17 +455,12 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         // step carried it as far: then the advance is a jump of the section's state (a member
         // reaching its squash load), which no increment makes smaller.
         const double advance = a.adaptive ? system_.trial_yield_advance() : 0.0;
-        const bool advance_jumps = refined_advance_ > 0.0 && advance >= 0.9 * refined_advance_;
-        if (advance > max_yield_advance && std::abs(step_h) * 0.5 >= h_min && !advance_jumps) {
-            u_ = u_saved;
-            lambda_ = lambda_saved;
-            system_.revert();
+        if (const double smaller = steps_.refined(step_h, advance, h_min); smaller != 0.0) {
+            roll_back(u_saved, lambda_saved);
             ++summary.refined_steps;
-            refined_advance_ = advance;
-            h = step_h * std::max(0.25, 0.9 * max_yield_advance / advance);
+            h = smaller;
             continue;
         }
-        refined_advance_ = 0.0;
         if (outcome.tolerance > summary.largest_residual_tolerance) {
             summary.largest_residual_tolerance = outcome.tolerance;
             summary.largest_tolerance_step = step_ + 1;
@@ -510,10 +486,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             break;
         }
 
-        ++steps_since_cut_;
-        const double before = std::abs(h);
-        h = next_increment(h, step_h, outcome, advance);
-        if (std::abs(h) > before) steps_since_cut_ = 0;
+        h = steps_.after_success(a, h, step_h, outcome, advance);
         if (target_reached()) {
             if (stage_ < model_.stages.size()) {
                 h = begin_stage(stage_);
@@ -579,31 +552,6 @@ double PathFollowing::begin_stage(std::size_t k) {
     path_.clear();
     path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
     return direction_ * s.increment;
-}
-
-double PathFollowing::next_increment(double h, double used, const NewtonResult& outcome, double yield_advance) const {
-    const AnalysisSpec& a = analysis_;
-    const double sign = h >= 0.0 ? 1.0 : -1.0;
-    double next = std::abs(h);
-    if (a.adaptive) {
-        // Toward the desired iteration count, as √(desired/iterations). Iterations spent after
-        // equilibrium was first reached, re-deciding contradicted active sets (fibres, hinges,
-        // contacts), do not count: that takes the same few iterations at any increment, so
-        // shrinking for them would keep the increment small for good. Likewise a step whose last
-        // iteration still contracted the residual tenfold was inside Newton's basin.
-        const int iterations = outcome.iterations_before_settling > 0 ? outcome.iterations_before_settling : outcome.iterations;
-        double factor = std::sqrt(static_cast<double>(a.desired_iterations) / std::max(iterations, 1));
-        if (outcome.contraction <= 0.1) factor = std::max(factor, 1.0);
-        if (yield_advance > 0.0) factor = std::min(factor, max_yield_advance / yield_advance);
-        next = std::abs(used) * std::clamp(factor, 0.5, 2.0);
-        if (std::abs(used) < std::abs(h) && factor >= 1.0) next = std::max(next, std::abs(h)); // a landing step
-    } else if (next < std::abs(a.initial_increment) && steps_since_cut_ >= 3) {
-        // Recover after a cut, once three steps have passed at the smaller increment: where
-        // the full increment failed, the next one tried at once mostly fails as well.
-        next = std::min(2.0 * next, std::abs(a.initial_increment));
-    }
-    if (a.max_increment > 0.0) next = std::min(next, a.max_increment);
-    return sign * next;
 }
 
 std::string PathFollowing::check_penetration() const {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "analysis/path_extrapolation.hpp"
+#include "analysis/step_controller.hpp"
 #include "analysis/step_result.hpp"
 #include "analysis/structural_system.hpp"
 #include "model/model.hpp"
@@ -75,7 +76,8 @@ private:
     double path_parameter() const;
     // Whether the next increment starts from the path's extrapolation.
     bool extrapolating() const;
-    double next_increment(double h, double used, const NewtonResult& outcome, double yield_advance) const;
+    // Back to the state before the attempt (the elements' trial states too).
+    void roll_back(const Eigen::VectorXd& u_saved, double lambda_saved);
     bool tangent_shows_limit();
     // The residual, relative to the load, that the rounding of the displacements alone leaves
     // at the current state (StructuralSystem::round_off_floor).
@@ -131,9 +133,8 @@ private:
     // An arc-length corrector's line missed the arc in this step (it was cut for that), and
     // the count of steps in a row before it that were cut for that.
     bool missed_arc_in_step_ = false;
-    double refined_advance_ = 0.0; // yield advance of this step's last attempt taken again smaller
     int steps_missing_arc_ = 0;
-    int steps_since_cut_ = 0;  // converged steps at the increment a cut left (fixed increments)
+    StepController steps_;     // the next increment's size
     double arc_length_ = 0.0;
     double last_residual_ = 0.0;
     int step_ = 0;
