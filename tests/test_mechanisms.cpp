@@ -38,8 +38,10 @@ TEST_CASE("The same ring pressed onto its base is held: no mechanism is named", 
     CHECK(r.summary.status == RunStatus::completed);
 }
 
-TEST_CASE("A beam on one pin turns about that pin", "[mechanism]") {
-    const Model m = read_scene_text(R"(
+namespace {
+// A beam on one pin at [2, 1], loaded across at its free end [6, 1].
+Model pinned_beam() {
+    return read_scene_text(R"(
 [scene]
 name = "pinned"
 [[material]]
@@ -68,5 +70,21 @@ scheme = "load_control"
 increment = 0.1
 target_load_factor = 1.0
 )", "pinned.toml");
+}
+} // namespace
+
+TEST_CASE("A beam on one pin turns about that pin", "[mechanism]") {
+    const Model m = pinned_beam();
     CHECK_THAT(unrestrained_rigid_motion(m), Catch::Contains("can move as a rigid body: a rotation about [2, 1]"));
+}
+
+TEST_CASE("A surface pressing a part holds it along its push", "[mechanism][self_contact]") {
+    // The same pinned beam: a push at its free end (another member's surface, say) across it
+    // holds the rotation; a push along it does not.
+    const Model m = pinned_beam();
+    const int tip = static_cast<int>(m.nodes.size()) - 1;
+    REQUIRE(m.nodes[static_cast<std::size_t>(tip)].x == 6.0);
+    const std::vector<SurfaceHold> across{{tip, {0.0, 1.0}}}, along{{tip, {1.0, 0.0}}};
+    CHECK(unrestrained_rigid_motion(m, nullptr, &across).empty());
+    CHECK_THAT(unrestrained_rigid_motion(m, nullptr, &along), Catch::Contains("a rotation about [2, 1]"));
 }

@@ -291,7 +291,14 @@ std::string PathFollowing::contact_mechanism() const {
             lost.push_back(k);
     }
     if (lost.empty()) return {};
-    const std::string motion = unrestrained_rigid_motion(model_, &in_contact);
+    // Surfaces pressed together hold each other's parts along their normal.
+    std::vector<SurfaceHold> pressed;
+    for (const SurfaceContact& c : system_.self_contact().contacts()) {
+        if (c.gap > 0.0) continue;
+        pressed.push_back({c.node, {c.normal[0], c.normal[1]}});
+        for (int end : c.segment) pressed.push_back({end, {-c.normal[0], -c.normal[1]}});
+    }
+    const std::string motion = unrestrained_rigid_motion(model_, &in_contact, &pressed);
     if (motion.empty()) return {};
     std::ostringstream s;
     s << "contact with the base was lost at " << lost.size() << (lost.size() == 1 ? " node" : " nodes") << " (";

@@ -37,7 +37,8 @@ std::string point_text(const Model& model, double x, double y) {
     return s.str();
 }
 
-std::string unrestrained_rigid_motion(const Model& model, const std::vector<bool>* in_contact) {
+std::string unrestrained_rigid_motion(const Model& model, const std::vector<bool>* in_contact,
+                                      const std::vector<SurfaceHold>* surface_holds) {
     const int n = static_cast<int>(model.nodes.size());
     Parts parts(n);
     for (const ElementSpec& e : model.elements) parts.join(e.node_i, e.node_j);
@@ -89,6 +90,9 @@ std::string unrestrained_rigid_motion(const Model& model, const std::vector<bool
             if (s.ky > 0.0) hold(mode(s.node, 1));
             if (s.krot > 0.0) hold(mode(s.node, 2));
         }
+        if (surface_holds)
+            for (const SurfaceHold& h : *surface_holds)
+                if (in_part(h.node)) hold(h.direction[0] * mode(h.node, 0) + h.direction[1] * mode(h.node, 1));
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(held);
         if (eig.eigenvalues()[0] > 1e-9 * std::max(eig.eigenvalues()[2], 1e-300)) continue;
         const Eigen::Vector3d free = eig.eigenvectors().col(0);
