@@ -82,6 +82,7 @@ StructuralSystem::StructuralSystem(const Model& model)
       equation_(number_equations(model, free_count_)),
       assembler_(free_count_, assembly_blocks(model, equation_)) {
     if (!self_contact_.empty()) blocks_ = assembly_blocks(model, equation_);
+    member_blocks_ = blocks_.size();
     for (const FoundationSpring& s : model.springs)
         on_moving_base_.push_back(s.unilateral && !s.anchored && model.bases.at(static_cast<std::size_t>(s.base)).moves());
     for (std::size_t p = 0; p < model.patterns.size(); ++p) platens_only_.push_back(model.driven_by_platens(static_cast<int>(p)));
@@ -179,12 +180,12 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
             const std::array<int, 3> nodes = c.node_list();
             for (int k = 0; k < c.nodes(); ++k) internal_.segment<2>(dofs_per_node * nodes[k]) += c.force.segment<2>(2 * k);
         }
-        add_surface_blocks();
+        if (add_surface_blocks()) assembler_ = BlockAssembler(free_count_, blocks_);
     }
     return true;
 }
 
-void StructuralSystem::add_surface_blocks() {
+bool StructuralSystem::add_surface_blocks() {
     bool added = false;
     for (const SurfaceContact& c : self_contact_.contacts()) {
         const std::array<int, 3> nodes = c.node_list();
@@ -196,7 +197,16 @@ void StructuralSystem::add_surface_blocks() {
         blocks_.push_back(std::move(block));
         added = true;
     }
-    if (added) assembler_ = BlockAssembler(free_count_, blocks_);
+    return added;
+}
+
+void StructuralSystem::keep_touching_surface_blocks() {
+    if (surface_block_.size() == self_contact_.contacts().size()) return; // every registered pair touches
+    blocks_.resize(member_blocks_);
+    surface_block_.clear();
+    add_surface_blocks();
+    assembler_ = BlockAssembler(free_count_, blocks_);
+    tangent_assembled_ = false;
 }
 
 bool StructuralSystem::contact_settled() const {
@@ -353,6 +363,7 @@ void StructuralSystem::predict_unloading() {
 
 void StructuralSystem::commit() {
     for (CorotationalBeam& e : elements_) e.commit();
+    if (!self_contact_.empty()) keep_touching_surface_blocks();
     joint_hinges_.reassign(elements_);
 }
 

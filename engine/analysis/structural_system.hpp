@@ -127,8 +127,13 @@ private:
     // The assembler's blocks: elements, springs, then each pair of surfaces that has touched
     // (node, segment ends), found by its nodes. A new pair widens the pattern once.
     std::vector<std::vector<int>> blocks_;
+    std::size_t member_blocks_ = 0; // elements and springs: the blocks that are always there
     std::map<std::array<int, 3>, std::size_t> surface_block_;
-    void add_surface_blocks();
+    bool add_surface_blocks(); // whether a pair was new (the assembler is then built again)
+    // At a commit: only the pairs that touch now keep their blocks. A pair that touched only in
+    // a wandering iterate would otherwise keep coupling two far nodes of a ring, and its
+    // factorisation would stay as wide as that chord made it.
+    void keep_touching_surface_blocks();
     FollowerPressure pressure_;
     JointHinges joint_hinges_;
     std::vector<Eigen::VectorXd> pattern_loads_; // per pattern, the nodal loads

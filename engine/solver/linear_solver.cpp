@@ -67,11 +67,21 @@ void LinearSolver::analyse_sparse(const SparseMatrix& K) {
     ldlt_.analyse(permuted_k_);
 }
 
+bool LinearSolver::same_pattern(const SparseMatrix& K) const {
+    return K.nonZeros() == static_cast<Eigen::Index>(pattern_inner_.size()) &&
+           K.outerSize() + 1 == static_cast<Eigen::Index>(pattern_outer_.size()) &&
+           std::equal(pattern_outer_.begin(), pattern_outer_.end(), K.outerIndexPtr()) &&
+           std::equal(pattern_inner_.begin(), pattern_inner_.end(), K.innerIndexPtr());
+}
+
 bool LinearSolver::factorize(const SparseMatrix& K) {
-    // A pattern only grows (surfaces that touch couple new nodes): a new count is a new pattern.
-    if (!analysed_ || K.nonZeros() != analysed_nonzeros_) {
+    // Surfaces that touch couple new nodes, and those that part uncouple them: a pattern that
+    // is not the analysed one is analysed again (comparing it costs a read of its indices, a
+    // small part of a factorisation).
+    if (!analysed_ || !same_pattern(K)) {
         analyse(K);
-        analysed_nonzeros_ = K.nonZeros();
+        pattern_outer_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+        pattern_inner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
         lu_analysed_ = false;
     }
     const double* values = K.valuePtr();

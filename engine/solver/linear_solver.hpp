@@ -19,8 +19,8 @@ namespace plastica {
 
 class LinearSolver {
 public:
-    // Returns false when the matrix is singular (also for LU). The sparsity pattern of K may
-    // only grow from call to call (the assembler keeps it fixed until surfaces touch).
+    // Returns false when the matrix is singular (also for LU). A pattern of K other than the
+    // last call's is analysed again (the assembler keeps it fixed until surfaces touch or part).
     bool factorize(const SparseMatrix& K);
     Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
     // The same into x, without allocating once x has its size (Newton's corrections).
@@ -55,7 +55,8 @@ private:
     bool blocks_used_ = false; // node blocks (true) or the general sparse factorisation
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
     bool analysed_ = false;
-    Eigen::Index analysed_nonzeros_ = 0;
+    std::vector<int> pattern_outer_, pattern_inner_; // K's pattern when it was analysed
+    bool same_pattern(const SparseMatrix& K) const;
     bool lu_analysed_ = false;
     bool using_lu_ = false;
     int negative_pivots_ = 0;
