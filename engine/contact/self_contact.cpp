@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <set>
 #include <queue>
 #include <tuple>
 
@@ -202,9 +203,9 @@ void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double 
 
     // Two segment ends that touch each other are one contact, though each pass finds it.
     {
-        std::map<Key, bool> ends;
+        std::set<Key> ends;
         for (const SurfaceContact& f : found)
-            if (f.nodes() == 2) ends[key_of(f)] = true;
+            if (f.nodes() == 2) ends.insert(key_of(f));
         found.erase(std::remove_if(found.begin(), found.end(),
                                    [&](const SurfaceContact& f) {
                                        return f.nodes() == 2 && f.node > f.segment[0] &&
@@ -212,10 +213,9 @@ void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double 
                                    }),
                     found.end());
     }
-    std::map<Key, const SurfaceContact*> now;
-    for (const SurfaceContact& f : found) now[key_of(f)] = &f;
-    std::map<Key, const SurfaceContact*> before;
-    for (const SurfaceContact& f : contacts_) before[key_of(f)] = &f;
+    std::set<Key> now, before;
+    for (const SurfaceContact& f : found) now.insert(key_of(f));
+    for (const SurfaceContact& f : contacts_) before.insert(key_of(f));
 
     // A pair whose force at its gap is within the undecided band keeps its previous state.
     std::vector<SurfaceContact> acting;
@@ -223,8 +223,12 @@ void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double 
     for (const SurfaceContact& f : found) {
         const bool was = before.count(key_of(f)) > 0;
         const bool small = undecided(f, undecided_force);
-        if (freeze_active ? was : (was || !small)) acting.push_back(f);
-        else if (!small) consistent_ = false; // a new touch the frozen set leaves out
+        if (freeze_active ? was : (was || !small)) {
+            acting.push_back(f);
+            evaluate_pair(acting.back());
+        } else if (!small) {
+            consistent_ = false; // a new touch the frozen set leaves out
+        }
     }
     // Previous pairs that opened: kept while frozen, or while undecided, at their old kind.
     for (const SurfaceContact& f : contacts_) {
@@ -235,11 +239,9 @@ void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double 
         if (freeze_active || small) acting.push_back(kept);
         if (freeze_active && !small) consistent_ = false;
     }
-    for (SurfaceContact& a : acting) evaluate_pair(a);
-    std::map<Key, bool> after;
-    for (const SurfaceContact& a : acting) after[key_of(a)] = true;
-    changed_ = after.size() != before.size() ||
-               !std::equal(after.begin(), after.end(), before.begin(), [](const auto& x, const auto& y) { return x.first == y.first; });
+    std::set<Key> after;
+    for (const SurfaceContact& a : acting) after.insert(key_of(a));
+    changed_ = after != before;
     contacts_ = std::move(acting);
 }
 
