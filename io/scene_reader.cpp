@@ -176,7 +176,14 @@ private:
                 r.fail("plasticity", "an inelastic section needs a material with 'fy'");
             if (plasticity == "distributed") {
                 s.plasticity = Plasticity::distributed;
-                s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
+                s.formulation = r.choice("formulation", {"displacement", "force"}, "displacement") == "force" ? Formulation::force : Formulation::displacement;
+                if (s.formulation == Formulation::force) {
+                    // Lobatto points: three integrate the elastic flexibility exactly.
+                    s.integration_points = r.integer_or("integration_points", default_force_based_points, 3, 10);
+                    for (const char* key : {"segments", "segment_grading"})
+                        if (r.has(key)) r.fail(key, "a force-based member has no segments: its sections take the curvature their exact moments need");
+                }
+                else s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
                 s.segments = r.integer_or("segments", default_segments, 1, 16);
                 if (r.has("segment_grading")) {
                     if (s.segments < 3) r.fail("segment_grading", "grading needs segments = 3 or more");
@@ -187,6 +194,8 @@ private:
             } else {
                 if (r.has("integration_points"))
                     r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
+                if (r.has("formulation"))
+                    r.fail("formulation", "only a section with plasticity = \"distributed\" has a formulation");
                 for (const char* key : {"segments", "segment_grading"})
                     if (r.has(key)) r.fail(key, "only a section with plasticity = \"distributed\" has segments");
                 s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
@@ -198,7 +207,7 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
-            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "integration_points", "segments", "segment_grading"};
+            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "formulation", "integration_points", "segments", "segment_grading"};
             keys.insert(keys.end(), shape.keys.begin(), shape.keys.end());
             r.finish(keys);
             section_index_[name] = static_cast<int>(model_.sections.size());

@@ -41,6 +41,7 @@ int set_plasticity(toml::table& root, const std::string& plasticity) {
                     t->erase("integration_points");
                     t->erase("segments");
                     t->erase("segment_grading");
+                    t->erase("formulation");
                 }
                 ++changed;
             }

@@ -5,6 +5,10 @@
 
 #include "analysis_helpers.hpp"
 
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+
 #include <string>
 
 namespace plastica::testing {
@@ -87,6 +91,32 @@ inline std::string tip_loaded_rectangle_cantilever(double E, double fy, const st
            "[[load]]\nat = [1000.0, 0.0]\nfy = -1.0\n"
            "[analysis]\nscheme = \"load_control\"\nincrement = " + num(P / 50.0) +
            "\nadaptive = false\ntarget_load_factor = " + num(P) + "\nresidual_tolerance = 1e-10\nmax_steps = 100\n";
+}
+
+// tests/frames/portal_weak_columns.toml (HEB 200 columns, IPE 300 beam, 250 kN on each column
+// top and 100 kN sideways, × λ) with fibre sections along every member: `section_keys` follow
+// plasticity = "distributed"; n elements per member, fixed increments of 0.001 of sway.
+inline std::string weak_column_portal_in_fibres(int elements, const std::string& section_keys) {
+    std::string text = scene_file_text("tests/frames/portal_weak_columns.toml");
+    for (std::size_t at = text.find("elements = 8"); at != std::string::npos; at = text.find("elements = 8", at + 1))
+        text.replace(at, 12, "elements = " + std::to_string(elements));
+    for (const std::string web : {"web_thickness = 0.009\n", "web_thickness = 0.0071\n"})
+        text.replace(text.find(web), web.size(), web + "plasticity = \"distributed\"\n" + section_keys);
+    text.replace(text.find("increment = 0.002"), 17, "increment = 0.001\nadaptive = false");
+    return text;
+}
+
+// The peak load factor of a run; with a tolerance > 0, also checks that every section of every
+// step carries its element's axial force within it.
+inline double peak_load_factor(const Run& run, double axial_tolerance = 0.0) {
+    double peak = 0.0;
+    for (const StepResult& s : run.steps) {
+        peak = std::max(peak, s.load_factor);
+        if (axial_tolerance <= 0.0) continue;
+        for (const ElementResult& e : s.elements)
+            for (const SectionReport& section : e.sections) CHECK(std::abs(section.axial_force - e.forces.axial) < axial_tolerance);
+    }
+    return peak;
 }
 
 } // namespace plastica::testing

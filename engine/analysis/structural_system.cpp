@@ -1,6 +1,7 @@
 #include "analysis/structural_system.hpp"
 
 #include "element/distributed_plasticity_law.hpp"
+#include "element/force_based_plasticity_law.hpp"
 #include "element/plastic_hinge_law.hpp"
 #include "element/released_ends_law.hpp"
 #include "element/segmented_plasticity_law.hpp"
@@ -52,6 +53,7 @@ std::unique_ptr<BasicLaw> make_member_law(const SectionSpec& s, double L0, Hinge
     switch (s.plasticity) {
     case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, ends_served);
     case Plasticity::distributed:
+        if (s.formulation == Formulation::force) return std::make_unique<ForceBasedPlasticityLaw>(s, L0, s.integration_points);
         if (s.segments > 1) return std::make_unique<SegmentedPlasticityLaw>(s, L0, s.segments, s.integration_points, s.segment_grading);
         return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
     case Plasticity::none: break;

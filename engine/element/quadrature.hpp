@@ -1,4 +1,6 @@
-// Gauss–Legendre quadrature on [0, 1]: n points integrate polynomials of degree 2n − 1 exactly.
+// Quadrature rules on [0, 1]. Gauss–Legendre: n points integrate polynomials of degree 2n − 1
+// exactly. Gauss–Lobatto: n points, both ends among them, degree 2n − 3 (a force-based member
+// samples its end sections, where the moment peaks).
 #pragma once
 
 #include <vector>
@@ -11,5 +13,6 @@ struct QuadraturePoint {
 };
 
 std::vector<QuadraturePoint> gauss_legendre(int points);
+std::vector<QuadraturePoint> gauss_lobatto(int points); // points ≥ 2
 
 } // namespace plastica

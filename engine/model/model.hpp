@@ -51,9 +51,14 @@ enum class Plasticity {
     distributed, // fibre sections at integration points along the member (plastic zone)
 };
 
-// Gauss–Legendre points per segment, and segments per element, of a distributed-plasticity
-// member unless the scene says.
+// How a distributed-plasticity member relates its sections to its ends: by a displacement
+// field (curvature linear along each segment) or by equilibrium (moments linear, exact).
+enum class Formulation { displacement, force };
+
+// Gauss–Legendre points per segment, and segments per element, of a displacement-based
+// distributed-plasticity member unless the scene says; Gauss–Lobatto points of a force-based one.
 inline constexpr int default_integration_points = 3;
+inline constexpr int default_force_based_points = 5;
 inline constexpr int default_segments = 1;
 
 // A section carries elastic properties for the beam interior and, when the scene is
@@ -66,7 +71,8 @@ struct SectionSpec {
     std::optional<SteelSpec> steel; // present: inelastic section with fibres
     std::vector<Fibre> fibres;      // filled when steel is present
     Plasticity plasticity = Plasticity::none; // hinges or distributed when steel is present
-    int integration_points = 0;     // distributed: Gauss–Legendre points per segment
+    Formulation formulation = Formulation::displacement; // distributed
+    int integration_points = 0;     // distributed: Gauss–Legendre points per segment (Lobatto: force-based)
     int segments = 1;               // distributed: segments per element (inner nodes condensed)
     double segment_grading = 1.0;   // distributed: each segment's length over its outer neighbour's
     double mass_per_length = 0.0;   // density × area, for self weight
