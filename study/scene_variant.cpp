@@ -26,7 +26,11 @@ int set_in_tables(toml::table& root, const char* array, const char* key, double 
 }
 
 // Sets `plasticity` on every section whose material has a yield stress; returns how many.
-int set_plasticity(toml::table& root, const std::string& plasticity) {
+// "force_based" is distributed plasticity in force-based members (their own Lobatto points, no
+// segments); "distributed" the default displacement-based members.
+int set_plasticity(toml::table& root, const std::string& method) {
+    const bool force_based = method == "force_based";
+    const std::string plasticity = force_based ? "distributed" : method;
     std::set<std::string> inelastic;
     if (toml::array* materials = root["material"].as_array())
         for (toml::node& m : *materials)
@@ -37,11 +41,16 @@ int set_plasticity(toml::table& root, const std::string& plasticity) {
         for (toml::node& item : *sections)
             if (toml::table* t = item.as_table(); t && inelastic.count((*t)["material"].value_or(std::string()))) {
                 t->insert_or_assign("plasticity", plasticity);
-                if (plasticity != "distributed") {
+                t->erase("formulation");
+                if (force_based) {
+                    t->insert_or_assign("formulation", "force");
                     t->erase("integration_points");
                     t->erase("segments");
                     t->erase("segment_grading");
-                    t->erase("formulation");
+                } else if (plasticity != "distributed") {
+                    t->erase("integration_points");
+                    t->erase("segments");
+                    t->erase("segment_grading");
                 }
                 ++changed;
             }

@@ -119,8 +119,8 @@ void add_variation(StudyOptions& options, const std::string& text) {
     if (name == "plasticity") {
         std::stringstream in(values);
         for (std::string method; std::getline(in, method, ',');) {
-            if (method != "hinges" && method != "distributed")
-                throw StudyError("--vary plasticity: expected hinges or distributed, got '" + method + "'");
+            if (method != "hinges" && method != "distributed" && method != "force_based")
+                throw StudyError("--vary plasticity: expected hinges, distributed or force_based, got '" + method + "'");
             options.methods.push_back(method);
         }
         if (options.methods.size() < 2) throw StudyError("--vary plasticity needs two methods, e.g. plasticity=hinges,distributed");

@@ -396,7 +396,7 @@ TEST_CASE("plastica study and plastica stability write their tables and charts",
     CHECK_THAT(bad.output, Catch::Contains("'ten' is not a number"));
     const Result method = command("study " + model("ring_inelastic.toml") + " --vary plasticity=hinges,zones --vary elements=10,20 -o " + out.string());
     CHECK(method.code == 2);
-    CHECK_THAT(method.output, Catch::Contains("--vary plasticity: expected hinges or distributed, got 'zones'"));
+    CHECK_THAT(method.output, Catch::Contains("--vary plasticity: expected hinges, distributed or force_based, got 'zones'"));
     const Result elastic = command("study " + model("ring_elastic.toml") + " --vary plasticity=hinges,distributed --vary elements=10,20 -o " + out.string());
     CHECK(elastic.code == 2);
     CHECK_THAT(elastic.output, Catch::Contains("no inelastic section whose plasticity could be varied"));

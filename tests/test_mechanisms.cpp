@@ -3,6 +3,7 @@
 // (engine/model/rigid_motions.hpp, engine/analysis/path_following.hpp), never the round-off
 // advice that a tolerance cannot be met.
 #include "analysis_helpers.hpp"
+#include "plastic_beam_scenes.hpp"
 #include "model/rigid_motions.hpp"
 #include "scene_overrides.hpp"
 
@@ -87,4 +88,27 @@ TEST_CASE("A surface pressing a part holds it along its push", "[mechanism][self
     const std::vector<SurfaceHold> across{{tip, {0.0, 1.0}}}, along{{tip, {1.0, 0.0}}};
     CHECK(unrestrained_rigid_motion(m, nullptr, &across).empty());
     CHECK_THAT(unrestrained_rigid_motion(m, nullptr, &along), Catch::Contains("a rotation about [2, 1]"));
+}
+
+TEST_CASE("A frame loaded past its plastic collapse names the mechanism's hinges", "[mechanism][plasticity]") {
+    // The portal of plastic_beam_scenes.hpp (fixed bases, 4000 high, 8000 wide) in refined
+    // hinges under load control. With V = λ at mid-span and H = 0.1 λ the beam mechanism
+    // governs: hinges at both beam ends and under the load, 4 M_p = V L/2 at V = 8 M_p/L (the
+    // combined mechanism needs 6 M_p = H h + V L/2, i.e. V = 6 M_p/4400 · … above it).
+    std::string beam = plastic_beam_header("hinges") + portal_frame() +
+                       "[analysis]\nscheme = \"load_control\"\nincrement = 5.0\ntarget_load_factor = 400.0\n";
+    beam.replace(beam.find("fx = 1.0"), 8, "fx = 0.1");
+    const Run b = run_scene(beam);
+    CHECK(b.summary.status == RunStatus::limit_load);
+    CHECK(b.steps.back().load_factor == Approx(8.0 * rectangle_Mp / 8000.0).epsilon(0.01));
+    CHECK_THAT(b.summary.reason, Catch::EndsWith("a plastic mechanism, hinges at capacity at [0, 4000], [4000, 4000], [8000, 4000]"));
+    // H alone: the sway mechanism, hinges at the four column ends, H h = 4 M_p.
+    std::string sway = plastic_beam_header("hinges") + portal_frame() +
+                       "[analysis]\nscheme = \"load_control\"\nincrement = 5.0\ntarget_load_factor = 400.0\n";
+    const std::string vertical = "[[load]]\nat = [4000.0, 4000.0]\nfy = -1.0\n";
+    sway.replace(sway.find(vertical), vertical.size(), "");
+    const Run s = run_scene(sway);
+    CHECK(s.summary.status == RunStatus::limit_load);
+    CHECK(s.steps.back().load_factor == Approx(4.0 * rectangle_Mp / 4000.0).epsilon(0.01));
+    CHECK_THAT(s.summary.reason, Catch::EndsWith("a plastic mechanism, hinges at capacity at [0, 0], [0, 4000], [8000, 4000], [8000, 0]"));
 }

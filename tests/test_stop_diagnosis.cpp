@@ -45,6 +45,15 @@ TEST_CASE("A stop names a non-finite state, then a mechanism, then a limit load"
     }
 }
 
+TEST_CASE("A limit load of plastic hinges names where they are at capacity", "[stop_diagnosis]") {
+    FailedStep f = diverged();
+    f.limit = true;
+    f.limit_evidence = "1 negative pivot(s)";
+    f.plastic_sites = "[0, 4000], [4000, 4000], [8000, 4000]";
+    CHECK(diagnose_failed_step(f).reason == "limit load reached at load factor 0.75 (1 negative pivot(s)): a plastic "
+                                             "mechanism, hinges at capacity at [0, 4000], [4000, 4000], [8000, 4000]");
+}
+
 TEST_CASE("No convergence says how far the increment was cut and what round-off allows", "[stop_diagnosis]") {
     FailedStep f = diverged();
     CHECK(diagnose_failed_step(f).reason ==

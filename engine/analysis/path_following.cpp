@@ -2,6 +2,7 @@
 
 #include "analysis/increment_constraints.hpp"
 #include "analysis/penetration_check.hpp"
+#include "analysis/plastic_sites.hpp"
 #include "analysis/stop_diagnosis.hpp"
 #include "analysis/structure_problem.hpp"
 #include "model/rigid_motions.hpp"
@@ -445,6 +446,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             failed.limit = outcome.failure != NewtonFailure::non_finite && mechanism.empty() &&
                            (beyond_limit || (can_be_limit && tangent_shows_limit()));
             failed.limit_evidence = limit_evidence_;
+            if (failed.limit) failed.plastic_sites = plastic_sites(model_, system_);
             failed.hopeless = hopeless;
             failed.increment = h;
             failed.residual = outcome.residual;
@@ -509,10 +511,15 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         // a thousandth, a tangent without stiffness in the load direction is the limit load.
         if (a.scheme == Scheme::load_control && model_.has_forces(a.pattern) && std::abs(step_h) < 1e-3 * std::abs(a.initial_increment) &&
             tangent_shows_limit()) {
-            summary.status = RunStatus::limit_load;
-            std::ostringstream why;
-            why << "limit load reached at load factor " << lambda_ << " (" << limit_evidence_ << ")";
-            summary.reason = why.str();
+            FailedStep at_limit;
+            at_limit.step = step_;
+            at_limit.load_factor = lambda_;
+            at_limit.limit = true;
+            at_limit.limit_evidence = limit_evidence_;
+            at_limit.plastic_sites = plastic_sites(model_, system_);
+            const StopReason stop = diagnose_failed_step(at_limit);
+            summary.status = stop.status;
+            summary.reason = stop.reason;
             break;
         }
     }
@@ -587,7 +594,7 @@ bool PathFollowing::tangent_shows_limit() {
         const double stiffness = initial_flexibility_ / flexibility;
         if (stiffness < 1e-4) {
             std::ostringstream s;
-            s << "stiffness in the load direction " << stiffness << " of the initial: a plastic mechanism";
+            s << "stiffness in the load direction " << stiffness << " of the initial";
             limit_evidence_ = s.str();
             return true;
         }

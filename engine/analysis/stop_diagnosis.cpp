@@ -18,6 +18,7 @@ StopReason diagnose_failed_step(const FailedStep& f) {
     } else if (f.limit) {
         out.status = RunStatus::limit_load;
         why << "limit load reached at load factor " << f.load_factor << " (" << f.limit_evidence << ")";
+        if (!f.plastic_sites.empty()) why << ": a plastic mechanism, hinges at capacity at " << f.plastic_sites;
     } else {
         why << "no convergence in step " << f.step << " at load factor " << f.load_factor << " (" << to_string(f.failure);
         if (f.hopeless) why << ", no smaller increment can help";

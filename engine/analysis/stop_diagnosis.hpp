@@ -20,6 +20,7 @@ struct FailedStep {
     std::string mechanism;        // the rigid motion that contact lost left free, in words
     bool limit = false;           // the tangent shows a limit point (load control of forces)
     std::string limit_evidence;   // how it shows it
+    std::string plastic_sites;    // where hinges are at capacity (a plastic mechanism)
     bool hopeless = false;        // the round-off floor is far above the tolerance: no cut can help
     double increment = 0.0;       // the increment it was cut to
     double residual = 0.0;        // relative, where Newton ended
