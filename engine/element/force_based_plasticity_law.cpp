@@ -58,11 +58,14 @@ bool ForceBasedPlasticityLaw::iterate(const Eigen::Vector3d& e) {
     double accepted_work = std::numeric_limits<double>::infinity(), scale = 1.0;
     Eigen::Vector3d start_q = q_t_, step_q = Eigen::Vector3d::Zero();
     for (int it = 0; it < max_element_iterations; ++it) {
-        consistent_ = true;
+        // Sections left at their deformations by the last settled trial need no new evaluation.
+        const bool evaluate_sections = it > 0 || !sections_current_;
+        sections_current_ = true;
+        if (evaluate_sections) consistent_ = true;
         Eigen::Vector3d residual = e;
         flexibility_.setZero();
         for (IntegrationPoint& p : points_) {
-            evaluate(p);
+            if (evaluate_sections) evaluate(p);
             const double wL = p.at.weight * L0_, a = p.at.xi - 1.0, b = p.at.xi;
             const Eigen::Vector2d unbalance = section_forces(p.at.xi, q_t_) - Eigen::Vector2d(p.trial.N, p.trial.M);
             const Eigen::Vector2d d = p.deformation + p.flexibility * unbalance; // bᵀ d with b = [1 0 0; 0 a b]
@@ -80,9 +83,13 @@ bool ForceBasedPlasticityLaw::iterate(const Eigen::Vector3d& e) {
         flexibility_(2, 0) = flexibility_(0, 2);
         flexibility_(2, 1) = flexibility_(1, 2);
         const Eigen::Vector3d dq = flexibility_.ldlt().solve(residual);
-        if (!dq.allFinite()) return false;
+        if (!dq.allFinite()) {
+            sections_current_ = false;
+            return false;
+        }
         const double work = std::abs(dq.dot(residual)) / work_scale_;
         if (work <= work_tolerance || (work <= round_off_work && work > 0.1 * accepted_work)) return true;
+        sections_current_ = false; // the deformations move on
         if (work > accepted_work && scale > 1.0 / 64) {
             // Back along the last step, halved.
             scale *= 0.5;
@@ -102,6 +109,7 @@ bool ForceBasedPlasticityLaw::iterate(const Eigen::Vector3d& e) {
             p.deformation += p.step;
         }
     }
+    sections_current_ = false;
     return false;
 }
 
@@ -109,6 +117,7 @@ void ForceBasedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::Ve
     // From the last trial where it settled (a warm start along the tangent), else from the
     // committed state; then from the committed state in parts.
     auto restart = [&] {
+        sections_current_ = false;
         q_t_ = q_c_;
         for (IntegrationPoint& p : points_) p.deformation = p.committed_deformation;
     };
@@ -157,6 +166,7 @@ void ForceBasedPlasticityLaw::revert() {
     }
     q_t_ = q_c_;
     settled_ = true;
+    sections_current_ = false;
 }
 
 std::vector<SectionReport> ForceBasedPlasticityLaw::sections() const {

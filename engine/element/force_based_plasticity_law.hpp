@@ -44,7 +44,10 @@ public:
     void revert() override;
     std::vector<SectionReport> sections() const override;
     // Fibre branches settle inside Newton like an active set (as distributed_plasticity_law.hpp).
-    void freeze_states(bool frozen) override { frozen_ = frozen; }
+    void freeze_states(bool frozen) override {
+        if (frozen != frozen_) sections_current_ = false; // evaluated the other way
+        frozen_ = frozen;
+    }
     // False also while the element iterations have not settled: Newton may not accept then.
     bool states_consistent() const override { return consistent_ && settled_; }
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<ForceBasedPlasticityLaw>(*this); }
@@ -78,6 +81,7 @@ private:
     bool frozen_ = false;
     bool consistent_ = true;
     bool settled_ = true;
+    bool sections_current_ = false; // the sections' trial responses are those at their deformations
 };
 
 } // namespace plastica
