@@ -11,6 +11,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <string>
+
 namespace plastica::bench {
 
 // Internal force and tangent of one co-rotational element at a large rotation.
@@ -78,5 +80,33 @@ void ring_analysis(benchmark::State& state, const char* scene) {
 BENCHMARK_CAPTURE(ring_analysis, elastic, "ring_elastic")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(ring_analysis, inelastic, "ring_inelastic")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(ring_analysis, distributed, "ring_distributed")->Unit(benchmark::kMillisecond);
+
+// A plastic-zone analysis in either formulation, as ring_analysis runs it: the ring on 50
+// elements of 5 Lobatto points (force) against its shipped 4 segments, and the portal of
+// tests/frames/portal_weak_columns.toml on 8 elements per member in fibre sections.
+void plastic_zone_analysis(benchmark::State& state, const char* scene, const char* formulation) {
+    const bool force = std::string(formulation) == "force";
+    const Model model =
+        std::string(scene) == "ring"
+            ? edited_scene("models/ring_distributed.toml",
+                           force ? std::vector<std::pair<std::string, std::string>>{{"segments = 4\n", "formulation = \"force\"\n"},
+                                                                                     {"integration_points = 2\n", ""}}
+                                 : std::vector<std::pair<std::string, std::string>>{})
+            : edited_scene("tests/frames/portal_weak_columns.toml",
+                           {{"web_thickness = 0.009\n", std::string("web_thickness = 0.009\nplasticity = \"distributed\"\nformulation = \"") + formulation + "\"\n"},
+                            {"web_thickness = 0.0071\n", std::string("web_thickness = 0.0071\nplasticity = \"distributed\"\nformulation = \"") + formulation + "\"\n"}});
+    RunControl curve_alone;
+    curve_alone.report_sections = false;
+    int steps = 0;
+    for (auto _ : state) {
+        PathFollowing analysis(model);
+        steps = analysis.run({}, curve_alone).steps;
+    }
+    state.counters["steps"] = steps;
+}
+BENCHMARK_CAPTURE(plastic_zone_analysis, ring_displacement, "ring", "displacement")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plastic_zone_analysis, ring_force, "ring", "force")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plastic_zone_analysis, portal_displacement, "portal", "displacement")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plastic_zone_analysis, portal_force, "portal", "force")->Unit(benchmark::kMillisecond);
 
 } // namespace plastica::bench
