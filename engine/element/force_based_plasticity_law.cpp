@@ -30,14 +30,6 @@ ForceBasedPlasticityLaw::ForceBasedPlasticityLaw(const SectionSpec& section, dou
     work_scale_ = (section.E * section.area * yield_strain * yield_strain + section.E * section.inertia * yield_curvature * yield_curvature) * L0;
     const FibreSection prototype(section);
     for (const QuadraturePoint& at : gauss_lobatto(integration_points)) points_.push_back({at, prototype, {}, {}, {}, {}, {}, {}, {}});
-    // The elastic flexibility until the first trial.
-    for (IntegrationPoint& p : points_) evaluate(p);
-    flexibility_.setZero();
-    for (const IntegrationPoint& p : points_) {
-        const double wL = p.at.weight * L0_, a = p.at.xi - 1.0, b = p.at.xi;
-        flexibility_(0, 0) += wL * p.flexibility(0, 0);
-        flexibility_.block<2, 2>(1, 1) += wL * p.flexibility(1, 1) * (Eigen::Matrix2d() << a * a, a * b, a * b, b * b).finished();
-    }
 }
 
 void ForceBasedPlasticityLaw::evaluate(IntegrationPoint& p) {
@@ -68,8 +60,7 @@ bool ForceBasedPlasticityLaw::iterate(const Eigen::Vector3d& e) {
             if (evaluate_sections) evaluate(p);
             const double wL = p.at.weight * L0_, a = p.at.xi - 1.0, b = p.at.xi;
             const Eigen::Vector2d unbalance = section_forces(p.at.xi, q_t_) - Eigen::Vector2d(p.trial.N, p.trial.M);
-            const Eigen::Vector2d d = p.deformation + p.flexibility * unbalance; // bᵀ d with b = [1 0 0; 0 a b]
-            residual -= wL * Eigen::Vector3d(d[0], a * d[1], b * d[1]);
+            residual -= wL * end_share(p.at.xi, p.deformation + p.flexibility * unbalance);
             // bᵀ f b, entry by entry.
             const Eigen::Matrix2d& f = p.flexibility;
             flexibility_(0, 0) += wL * f(0, 0);
@@ -129,10 +120,7 @@ void ForceBasedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::Ve
             restart();
             // The committed deformations' end deformations, where the parts start.
             e_c.setZero();
-            for (const IntegrationPoint& p : points_) {
-                const double wL = p.at.weight * L0_;
-                e_c += wL * Eigen::Vector3d(p.deformation[0], (p.at.xi - 1.0) * p.deformation[1], p.at.xi * p.deformation[1]);
-            }
+            for (const IntegrationPoint& p : points_) e_c += p.at.weight * L0_ * end_share(p.at.xi, p.deformation);
             settled_ = true;
             for (int part = 1; part <= parts && settled_; ++part) settled_ = iterate(e_c + (e - e_c) * (double(part) / parts));
         }

@@ -68,6 +68,8 @@ private:
     static Eigen::Vector2d section_forces(double xi, const Eigen::Vector3d& q) {
         return {q[0], (xi - 1.0) * q[1] + xi * q[2]};
     }
+    // A section's share of the end deformations per unit length, bᵀ d.
+    static Eigen::Vector3d end_share(double xi, const Eigen::Vector2d& d) { return {d[0], (xi - 1.0) * d[1], xi * d[1]}; }
     void evaluate(IntegrationPoint& p); // the section at its deformation, with the parallel stiffness
     // Element iterations toward e from the current trial state (q_t_ and the sections'
     // deformations); whether they settled. Leaves F in flexibility_.
@@ -77,7 +79,7 @@ private:
     double work_scale_;                  // N_y·ε_y·L0 + M_y·κ_y·L0: what "small" means for the iterations
     std::vector<IntegrationPoint> points_;
     Eigen::Vector3d q_t_ = Eigen::Vector3d::Zero(), q_c_ = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d flexibility_ = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d flexibility_ = Eigen::Matrix3d::Zero(); // F of the last element iteration
     bool frozen_ = false;
     bool consistent_ = true;
     bool settled_ = true;
