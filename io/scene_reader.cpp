@@ -180,7 +180,7 @@ private:
                 if (s.formulation == Formulation::force) {
                     // Lobatto points: three integrate the elastic flexibility exactly.
                     s.integration_points = r.integer_or("integration_points", default_force_based_points, 3, 10);
-                    for (const char* key : {"segments", "segment_grading"})
+                    for (const char* key : {"segments", "segment_grading", "axial_strain"})
                         if (r.has(key)) r.fail(key, "a force-based member has no segments: its sections take the curvature their exact moments need");
                 }
                 else s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
@@ -191,12 +191,16 @@ private:
                     if (!(s.segment_grading >= 0.25 && s.segment_grading <= 4.0))
                         r.fail("segment_grading", "must lie between 0.25 and 4 (each segment's length over its neighbour's nearer the element end)");
                 }
+                if (r.has("axial_strain")) {
+                    if (s.segments < 2) r.fail("axial_strain", "an axial strain per segment needs segments = 2 or more");
+                    s.axial_strain_per_segment = r.choice("axial_strain", {"per_element", "per_segment"}, "per_element") == "per_segment";
+                }
             } else {
                 if (r.has("integration_points"))
                     r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
                 if (r.has("formulation"))
                     r.fail("formulation", "only a section with plasticity = \"distributed\" has a formulation");
-                for (const char* key : {"segments", "segment_grading"})
+                for (const char* key : {"segments", "segment_grading", "axial_strain"})
                     if (r.has(key)) r.fail(key, "only a section with plasticity = \"distributed\" has segments");
                 s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
             }
@@ -207,7 +211,7 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
-            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "formulation", "integration_points", "segments", "segment_grading"};
+            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "formulation", "integration_points", "segments", "segment_grading", "axial_strain"};
             keys.insert(keys.end(), shape.keys.begin(), shape.keys.end());
             r.finish(keys);
             section_index_[name] = static_cast<int>(model_.sections.size());

@@ -47,10 +47,12 @@ int set_plasticity(toml::table& root, const std::string& method) {
                     t->erase("integration_points");
                     t->erase("segments");
                     t->erase("segment_grading");
+                    t->erase("axial_strain");
                 } else if (plasticity != "distributed") {
                     t->erase("integration_points");
                     t->erase("segments");
                     t->erase("segment_grading");
+                    t->erase("axial_strain");
                 }
                 ++changed;
             }

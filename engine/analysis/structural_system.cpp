@@ -54,7 +54,9 @@ std::unique_ptr<BasicLaw> make_member_law(const SectionSpec& s, double L0, Hinge
     case Plasticity::hinges: return std::make_unique<PlasticHingeLaw>(s, L0, ends_served);
     case Plasticity::distributed:
         if (s.formulation == Formulation::force) return std::make_unique<ForceBasedPlasticityLaw>(s, L0, s.integration_points);
-        if (s.segments > 1) return std::make_unique<SegmentedPlasticityLaw>(s, L0, s.segments, s.integration_points, s.segment_grading);
+        if (s.segments > 1 && s.axial_strain_per_segment)
+            return std::make_unique<AxialStrainPerSegment>(s, L0, s.segments, s.integration_points, s.segment_grading);
+        if (s.segments > 1) return std::make_unique<SharedAxialStrain>(s, L0, s.segments, s.integration_points, s.segment_grading);
         return std::make_unique<DistributedPlasticityLaw>(s, L0, s.integration_points);
     case Plasticity::none: break;
     }

@@ -75,6 +75,7 @@ struct SectionSpec {
     int integration_points = 0;     // distributed: Gauss–Legendre points per segment (Lobatto: force-based)
     int segments = 1;               // distributed: segments per element (inner nodes condensed)
     double segment_grading = 1.0;   // distributed: each segment's length over its outer neighbour's
+    bool axial_strain_per_segment = false; // distributed segments: each its own axial strain, one N along the member
     double mass_per_length = 0.0;   // density × area, for self weight
     // The distance between the section's two surfaces (h, depth, diameter, thickness) where
     // self-contact needs it; 0: that of the rectangle of the same A and I, √(12 I/A).
