@@ -1,7 +1,7 @@
-// Where a structure of plastic hinges yields as a mechanism, in words for a stop message: the
-// nodes at which hinges are at capacity. A limit load with such sites is a plastic mechanism,
-// and the user wants to know which one. (Fibre sections along a member yield gradually; where
-// their zones stand at a limit is left to the pictures.)
+// Where a structure yields as a mechanism, in words for a stop message: the nodes at which
+// hinges are at capacity, or next to which fibre sections along a member are nearly fully
+// plastic. A limit load with such sites is a plastic mechanism, and the user wants to know
+// which one.
 #pragma once
 
 #include "analysis/structural_system.hpp"
@@ -11,8 +11,9 @@
 
 namespace plastica {
 
-// The committed state's hinges at capacity, as "[x, y], [x, y], …" (scene coordinates, at most
-// eight); empty where none is.
+// The committed state's hinges at capacity, and the nodes nearest to nearly fully plastic
+// sections (mid-member: the section's own place), as "[x, y], [x, y], …" (scene coordinates, at
+// most eight, ordered along the members); empty where none is.
 std::string plastic_sites(const Model& model, const StructuralSystem& system);
 
 } // namespace plastica
