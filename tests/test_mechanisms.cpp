@@ -116,17 +116,24 @@ TEST_CASE("A frame loaded past its plastic collapse names the mechanism's hinges
 TEST_CASE("A frame of fibre sections loaded past its plastic collapse names the mechanism's plastic zones", "[mechanism][distributed]") {
     // The portal above with fibre sections along its members. Force-based members carry the
     // exact moment at their end sections and reach the mechanism loads (beam 8 M_p/L = 250,
-    // sway 4 M_p/h = 250); displacement-based ones overshoot at first order (the sway 279 on
-    // 4 elements per column) but their zones peak at the same joints. A zone is named where
-    // its sections' |M|/M_p(N) peaks at 0.99 or more, by the node of that half of the member.
+    // sway 4 M_p/h = 250); displacement-based ones overshoot at first order (the beam 287 on 8
+    // elements, the sway 279 on 4 per column) but their zones peak at the same joints. A zone
+    // is named where its sections' |M|/M_p(N) peaks at 0.99 or more, by the node of that half
+    // of the member.
     const std::string control = "[analysis]\nscheme = \"load_control\"\nincrement = 5.0\ntarget_load_factor = 400.0\n";
     const std::string vertical = "[[load]]\nat = [4000.0, 4000.0]\nfy = -1.0\n";
-    std::string beam = plastic_beam_header("distributed") + "formulation = \"force\"\n" + portal_frame() + control;
-    beam.replace(beam.find("fx = 1.0"), 8, "fx = 0.1");
-    const Run b = run_scene(beam);
-    CHECK(b.summary.status == RunStatus::limit_load);
-    CHECK(b.steps.back().load_factor == Approx(8.0 * rectangle_Mp / 8000.0).epsilon(0.01));
-    CHECK_THAT(b.summary.reason, Catch::EndsWith("a plastic mechanism, hinges at capacity at [0, 4000], [4000, 4000], [8000, 4000]"));
+    for (const char* formulation : {"formulation = \"force\"\n", ""}) {
+        std::string beam = plastic_beam_header("distributed") + formulation + portal_frame() + control;
+        beam.replace(beam.find("fx = 1.0"), 8, "fx = 0.1");
+        const Run b = run_scene(beam);
+        CAPTURE(formulation, b.summary.reason);
+        CHECK(b.summary.status == RunStatus::limit_load);
+        // Displacement-based: the plateau's first-order excess on 8 elements per beam, 15 %; its
+        // stiffness in the load direction has fallen to 2e-3 of the initial where Newton fails.
+        CHECK(b.steps.back().load_factor >= 0.99 * 8.0 * rectangle_Mp / 8000.0);
+        CHECK(b.steps.back().load_factor <= 1.2 * 8.0 * rectangle_Mp / 8000.0);
+        CHECK_THAT(b.summary.reason, Catch::EndsWith("a plastic mechanism, hinges at capacity at [0, 4000], [4000, 4000], [8000, 4000]"));
+    }
     for (const char* formulation : {"formulation = \"force\"\n", ""}) {
         std::string sway = plastic_beam_header("distributed") + formulation + portal_frame() + control;
         sway.replace(sway.find(vertical), vertical.size(), "");

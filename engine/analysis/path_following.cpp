@@ -425,11 +425,18 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             // A base the structure has left holds nothing: if that frees a rigid motion, the
             // failure is a mechanism, named with the contact that released it.
             const std::string mechanism = giving_up ? probe_contact_mechanism(u_saved, lambda_saved) : std::string();
+            // Members at capacity (committed sections): with fibre sections along them, a
+            // structure left with a hundredth of its stiffness in the load direction is at its
+            // plastic limit, as their zones spread and keep a little of it where a hinge's
+            // plateau keeps only its regularisation.
+            const std::string sites = giving_up && can_be_limit ? plastic_sites(model_, system_) : std::string();
+            const double limit_stiffness = !sites.empty() && model_.has_plasticity(Plasticity::distributed)
+                                               ? plastic_zone_stiffness : hinge_plateau_stiffness;
             if (giving_up && can_be_limit && outcome.failure != NewtonFailure::non_finite) {
                 if (outcome.negative_pivots_seen > 0)
                     limit_evidence_ = "the tangent beyond it has " + std::to_string(outcome.negative_pivots_seen) +
                                       " negative pivot(s)";
-                beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit();
+                beyond_limit = outcome.negative_pivots_seen > 0 || tangent_shows_limit(limit_stiffness);
             }
             roll_back(u_saved, lambda_saved);
             ++summary.cut_steps;
@@ -446,7 +453,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             failed.limit = outcome.failure != NewtonFailure::non_finite && mechanism.empty() &&
                            (beyond_limit || (can_be_limit && tangent_shows_limit()));
             failed.limit_evidence = limit_evidence_;
-            if (failed.limit) failed.plastic_sites = plastic_sites(model_, system_);
+            if (failed.limit) failed.plastic_sites = sites;
             failed.hopeless = hopeless;
             failed.increment = h;
             failed.residual = outcome.residual;
@@ -575,11 +582,12 @@ std::string PathFollowing::check_penetration() const {
     return "step " + std::to_string(step_) + ": " + found;
 }
 
-bool PathFollowing::tangent_shows_limit() {
+bool PathFollowing::tangent_shows_limit(double below) {
     // The state the system was last evaluated at is at or beyond a limit point when its
     // tangent has a negative pivot, or when its stiffness in the load direction (Bergan's
-    // current stiffness parameter, f·K₀⁻¹f / f·K⁻¹f) has fallen below 1e-4 of the initial one:
-    // a plastic mechanism, whose only remaining stiffness is the hinges' regularising hardening.
+    // current stiffness parameter, f·K₀⁻¹f / f·K⁻¹f) has fallen below `below` of the initial
+    // one: a plastic mechanism, whose only remaining stiffness is the hinges' regularising
+    // hardening (or the spread of fibre sections' zones).
     if (!solver_.factorize(system_.tangent())) {
         limit_evidence_ = "singular tangent";
         return true;
@@ -592,7 +600,7 @@ bool PathFollowing::tangent_shows_limit() {
     const double flexibility = f.dot(solver_.solve(f));
     if (initial_flexibility_ > 0.0 && flexibility > 0.0) {
         const double stiffness = initial_flexibility_ / flexibility;
-        if (stiffness < 1e-4) {
+        if (stiffness < below) {
             std::ostringstream s;
             s << "stiffness in the load direction " << stiffness << " of the initial";
             limit_evidence_ = s.str();

@@ -78,7 +78,11 @@ private:
     bool extrapolating() const;
     // Back to the state before the attempt (the elements' trial states too).
     void roll_back(const Eigen::VectorXd& u_saved, double lambda_saved);
-    bool tangent_shows_limit();
+    // Stiffness in the load direction, against the initial, below which a tangent shows a limit:
+    // a hinges' plateau, or members whose sections are at capacity (plastic_sites.hpp).
+    static constexpr double hinge_plateau_stiffness = 1e-4;
+    static constexpr double plastic_zone_stiffness = 1e-2;
+    bool tangent_shows_limit(double below = hinge_plateau_stiffness);
     // The residual, relative to the load, that the rounding of the displacements alone leaves
     // at the current state (StructuralSystem::round_off_floor).
     RoundOffFloor round_off_floor() const;
