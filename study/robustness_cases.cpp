@@ -208,6 +208,11 @@ std::vector<StabilityCase> robustness_cases() {
                      edited(embedded_scene("gallery/portal_frame"),
                             {{"residual_stress = 0.3", "residual_stress = 0.3\nplasticity = \"distributed\"\nformulation = \"force\""}}),
                      done, past_peak(5.0)});
+    cases.push_back({"portal frame, I-sections, residual stresses", "8 graded segments with an axial strain each, sway to 5 × the peak's",
+                     edited(embedded_scene("gallery/portal_frame"),
+                            {{"residual_stress = 0.3", "residual_stress = 0.3\nplasticity = \"distributed\"\nsegments = 8\n"
+                                                       "segment_grading = 2.0\nintegration_points = 2\naxial_strain = \"per_segment\""}}),
+                     done, past_peak(5.0)});
     // The crown load peaks, falls to below half of the peak as the arch snaps, then the arch
     // lands on the floor.
     const auto snaps_onto_floor = [](const Steps& steps, const RunSummary&) -> std::string {
