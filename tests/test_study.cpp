@@ -108,15 +108,23 @@ TEST_CASE("Richardson extrapolation of curves recovers the limit and the order o
     CHECK_THROWS_AS(extrapolated_limit({wild[0], wild[1]}, {0.2, 0.1}), StudyError);
 }
 
-TEST_CASE("A method comparison measures each method against its own limit and reports how far the limits are apart", "[study][distributed]") {
+namespace {
+// Methods compared on a ladder of element counts, each against its own extrapolated limit.
+StudyReport compare_methods(const std::string& scene, std::vector<double> elements, std::vector<std::string> methods,
+                            std::vector<double> at) {
     StudyOptions o;
-    o.scene = model("ring_inelastic");
-    o.ladders = {{"elements", {12, 24, 48}}};
-    o.methods = {"hinges", "distributed"};
+    o.scene = scene;
+    o.ladders = {{"elements", std::move(elements)}};
+    o.methods = std::move(methods);
     o.reference = "extrapolated";
-    o.at = {20.0, 60.0, 100.0};
+    o.at = std::move(at);
     o.min_seconds = 0.0;
-    const StudyReport r = run_study(o);
+    return run_study(o);
+}
+} // namespace
+
+TEST_CASE("A method comparison measures each method against its own limit and reports how far the limits are apart", "[study][distributed]") {
+    const StudyReport r = compare_methods(model("ring_inelastic"), {12, 24, 48}, {"hinges", "distributed"}, {20.0, 60.0, 100.0});
     REQUIRE(r.levels.size() == 6u);
     REQUIRE(r.observed_order.size() == 2u);
     CHECK(r.observed_order[0].method == "hinges");
@@ -152,14 +160,8 @@ TEST_CASE("Force-based members compared with displacement-based ones: one plasti
     // displacement element 2.167, 1.944, 1.858 (first order), the force-based one 1.789, 1.794,
     // 1.795; both model the same plastic zone, so their limits meet (within the displacement
     // element's extrapolation, about 1 % here), and the force-based curves change far less.
-    StudyOptions o;
-    o.scene = std::string(PLASTICA_SOURCE_DIR) + "/tests/frames/portal_weak_columns.toml";
-    o.ladders = {{"elements", {2, 4, 8}}};
-    o.methods = {"distributed", "force_based"};
-    o.reference = "extrapolated";
-    o.at = {0.1, 0.2, 0.3};
-    o.min_seconds = 0.0;
-    const StudyReport r = run_study(o);
+    const StudyReport r = compare_methods(std::string(PLASTICA_SOURCE_DIR) + "/tests/frames/portal_weak_columns.toml",
+                                          {2, 4, 8}, {"distributed", "force_based"}, {0.1, 0.2, 0.3});
     REQUIRE(r.levels.size() == 6u);
     for (const auto& level : r.levels) CHECK(level.status == "target displacement reached");
     CHECK(r.levels[3].method == "force_based");

@@ -1,7 +1,6 @@
 #include "analysis/plastic_sites.hpp"
 
 #include "model/rigid_motions.hpp"
-
 #include "section/fibre_section.hpp"
 
 #include <cmath>
@@ -12,10 +11,9 @@
 namespace plastica {
 
 namespace {
-// A hinge (or a fibre section) this close to its capacity turns with the mechanism: at the last converged step
-// before the limit, one hinge of a beam mechanism may still be closing in on M_p(N).
+// A hinge (or a fibre section) this close to its capacity turns with the mechanism: at the last
+// converged step before the limit, one hinge of a beam mechanism may still be closing in on M_p(N).
 constexpr double at_capacity = 0.99;
-
 constexpr std::size_t most_sites = 8;
 } // namespace
 
