@@ -17,9 +17,6 @@ namespace plastica::render {
 
 namespace {
 
-// The structure on the left of a frame, the chart on its right.
-constexpr double split = 0.57;
-
 // " kN" after a value, or nothing.
 std::string unit_after(const std::string& unit) { return unit.empty() ? "" : " " + unit; }
 
@@ -31,9 +28,11 @@ FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* 
       chart_(with_unit(summary.displacement_label, summary.displacement_unit), load_axis_title(summary),
              text_boost * text_scale(width, height)) {
     const double s = text_boost * text_scale(width, height);
-    const Viewport structure_port{0.0, 0.0, split, 1.0 - band, static_cast<int>(std::lround(split * width)),
-                                  static_cast<int>(std::lround((1.0 - band) * height))};
-    structure_ = std::make_unique<StructureView>(summary, make_layers(summary, first_step, base, layers), structure_port, s);
+    auto structure_layers = make_layers(summary, first_step, base, layers);
+    double box[4], size;
+    StructureView::view_box(summary, structure_layers, box, size);
+    const FrameLayout layout = choose_frame_layout(box[1] - box[0], box[3] - box[2], width, height);
+    structure_ = std::make_unique<StructureView>(summary, std::move(structure_layers), layout, s);
 
     title_band_->SetViewport(0.0, 1.0 - band, 1.0, 1.0);
     title_band_->SetBackground(colour::title_band.red(), colour::title_band.green(), colour::title_band.blue());
@@ -45,7 +44,7 @@ FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* 
     title_band_->AddViewProp(title_);
     title_band_->AddViewProp(status_);
 
-    chart_area_->SetViewport(split, 0.0, 1.0, 1.0 - band);
+    chart_area_->SetViewport(layout.chart[0], layout.chart[1], layout.chart[2], layout.chart[3]);
     chart_area_->SetBackground(1, 1, 1);
     const auto xs = curve_column(summary.curve, summary.curve.size(), false);
     const auto ys = curve_column(summary.curve, summary.curve.size(), true);
@@ -61,6 +60,7 @@ FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* 
 
     window_.add(title_band_);
     window_.add(structure_->renderer());
+    if (vtkRenderer* legend = structure_->legend_renderer()) window_.add(legend);
     window_.add(chart_area_);
 }
 

@@ -33,9 +33,6 @@ namespace plastica::render {
 
 namespace {
 
-// Share of the viewport width kept free on the right for the colour bar and the legend.
-constexpr double side_column = 0.25;
-
 std::string format(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof text, pattern, value);
@@ -50,10 +47,15 @@ std::string readable(std::string name) {
 }
 
 StructureView::StructureView(const SeriesSummary& summary, std::vector<std::unique_ptr<Layer>> layers,
-                             const Viewport& viewport, double text_scale)
-    : summary_(summary), layers_(std::move(layers)), viewport_(viewport) {
-    renderer_->SetViewport(viewport.x0, viewport.y0, viewport.x1, viewport.y1);
+                             const FrameLayout& layout, double text_scale)
+    : summary_(summary), layers_(std::move(layers)), layout_(layout), viewport_(layout.structure) {
+    renderer_->SetViewport(viewport_.x0, viewport_.y0, viewport_.x1, viewport_.y1);
     renderer_->SetBackground(colour::background.red(), colour::background.green(), colour::background.blue());
+    if (layout_.legend) {
+        const Viewport& v = *layout_.legend;
+        legend_renderer_->SetViewport(v.x0, v.y0, v.x1, v.y1);
+        legend_renderer_->SetBackground(colour::background.red(), colour::background.green(), colour::background.blue());
+    }
     ViewGeometry view = fix_camera();
     view.text_scale = text_scale;
 
@@ -108,19 +110,28 @@ StructureView::StructureView(const SeriesSummary& summary, std::vector<std::uniq
 
 StructureView::~StructureView() = default;
 
+void StructureView::view_box(const SeriesSummary& summary, const std::vector<std::unique_ptr<Layer>>& layers,
+                             double box[4], double& size) {
+    const double* b = summary.bounds;
+    const double width = std::max(b[1] - b[0], 1e-9), height = std::max(b[3] - b[2], 1e-9);
+    size = std::max(width, height);
+    box[0] = b[0] - 0.04 * size, box[1] = b[1] + 0.04 * size, box[2] = b[2] - 0.04 * size, box[3] = b[3] + 0.04 * size;
+    for (auto& layer : layers) layer->reserve(box, size);
+}
+
 ViewGeometry StructureView::fix_camera() {
-    const double* b = summary_.bounds;
-    double width = std::max(b[1] - b[0], 1e-9), height = std::max(b[3] - b[2], 1e-9);
-    const double size = std::max(width, height);
-    double box[4] = {b[0] - 0.04 * size, b[1] + 0.04 * size, b[2] - 0.04 * size, b[3] + 0.04 * size};
-    for (auto& layer : layers_) layer->reserve(box, size);
-    width = box[1] - box[0];
-    height = box[3] - box[2];
-    // The structure gets the viewport minus the side column, at true aspect ratio.
+    double box[4], size;
+    view_box(summary_, layers_, box, size);
+    const double width = box[1] - box[0], height = box[3] - box[2];
+    // The structure gets the viewport minus the legend's column (if it has one), at true aspect ratio.
+    const double side_column = layout_.legend_column;
     const double usable_w = viewport_.width_px * (1.0 - side_column), usable_h = viewport_.height_px;
     ViewGeometry view;
     view.world_per_pixel = std::max(width / usable_w, height / usable_h);
-    view.ribbon_width = 0.012 * size;
+    // The ribbon's width follows the structure's size, up to what a structure about as wide as it
+    // is tall gets beside the chart (wider drawings would make it a band).
+    const double picture_width = viewport_.width_px / (viewport_.x1 - viewport_.x0);
+    view.ribbon_width = std::min(0.012 * size, 0.005 * picture_width * view.world_per_pixel);
     view.size = size;
     view.mirrored = summary_.mirrored;
     view.mirror_x = summary_.mirror_x;
@@ -178,7 +189,28 @@ std::string fit_width(vtkTextProperty* property, const std::string& text, double
 
 } // namespace
 
+struct StructureView::LegendColumn {
+    vtkRenderer* renderer;
+    double width_px, height_px; // of the renderer's viewport
+    double bar[4];              // the colour bar: normalised x, y, width and height
+    double title_room;          // pixels across for the colour bar's title
+    double entries_x, entries_y; // pixels: where the first entry's mark goes
+};
+
+StructureView::LegendColumn StructureView::legend_column() const {
+    if (!layout_.legend) { // the right-hand column of the structure's viewport
+        const double left = 1.0 - layout_.legend_column, w = viewport_.width_px, h = viewport_.height_px;
+        return {renderer_.Get(), w, h, {left + 0.03, 0.50, (1.0 - left) - 0.05, 0.45}, (1.0 - left - 0.03) * w,
+                w * (left + 0.03), h * 0.42};
+    }
+    // A viewport of their own under the structure: the colour bar in its left half, the entries
+    // in its right half.
+    const double w = layout_.legend->width_px, h = layout_.legend->height_px;
+    return {legend_renderer_.Get(), w, h, {0.06, 0.06, 0.4, 0.86}, 0.44 * w, 0.56 * w, 0.88 * h};
+}
+
 void StructureView::add_colour_bar(double text_scale) {
+    const LegendColumn column = legend_column();
     colour_bar_->SetLookupTable(colours_);
     colour_bar_->SetNumberOfLabels(5);
     colour_bar_->SetLabelFormat("%-8.3g"); // 255, not "255."
@@ -186,9 +218,9 @@ void StructureView::add_colour_bar(double text_scale) {
     colour_bar_->UnconstrainedFontSizeOn();
     colour_bar_->SetBarRatio(0.22);
     colour_bar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    colour_bar_->GetPositionCoordinate()->SetValue(1.0 - side_column + 0.03, 0.50);
-    colour_bar_->SetWidth(side_column - 0.05);
-    colour_bar_->SetHeight(0.45);
+    colour_bar_->GetPositionCoordinate()->SetValue(column.bar[0], column.bar[1]);
+    colour_bar_->SetWidth(column.bar[2]);
+    colour_bar_->SetHeight(column.bar[3]);
     colour_bar_->SetTextPositionToPrecedeScalarBar();
     colour_bar_->SetTextPositionToSucceedScalarBar();
     style_text(colour_bar_->GetTitleTextProperty(), 15 * text_scale, true);
@@ -197,10 +229,9 @@ void StructureView::add_colour_bar(double text_scale) {
     // The unit on a line of its own, and the name broken where the column is too narrow for it
     // (a contact sheet's tile): the column from the bar's left edge to the picture's.
     const std::string unit = array_unit(summary_, summary_.field.name);
-    const double room = (side_column - 0.03) * viewport_.width_px;
-    colour_bar_->SetTitle((fit_width(colour_bar_->GetTitleTextProperty(), readable(summary_.field.name), room) +
+    colour_bar_->SetTitle((fit_width(colour_bar_->GetTitleTextProperty(), readable(summary_.field.name), column.title_room) +
                            (unit.empty() ? "" : "\n(" + unit + ")")).c_str());
-    renderer_->AddViewProp(colour_bar_);
+    column.renderer->AddViewProp(colour_bar_);
 }
 
 void StructureView::add_legend(double text_scale) {
@@ -210,20 +241,22 @@ void StructureView::add_legend(double text_scale) {
         notes_.clear();
         if (lay_out_legend(s) >= 0.0 || s < 0.75 * text_scale) break;
     }
-    renderer_->AddViewProp(legend_marks_.prop());
-    for (auto& n : notes_) renderer_->AddViewProp(n);
+    vtkRenderer* renderer = legend_column().renderer;
+    renderer->AddViewProp(legend_marks_.prop());
+    for (auto& n : notes_) renderer->AddViewProp(n);
 }
 
 double StructureView::lay_out_legend(double s) {
-    const double x = viewport_.width_px * (1.0 - side_column + 0.03);
-    double y = viewport_.height_px * 0.42;
+    const LegendColumn column = legend_column();
+    const double x = column.entries_x;
+    double y = column.entries_y;
     // Returns the number of lines the text took.
     auto add_text = [&](const std::string& content, double size, double at_x, double at_y, bool top) {
         auto text = vtkSmartPointer<vtkTextActor>::New();
         style_text(text->GetTextProperty(), size);
         if (top) text->GetTextProperty()->SetVerticalJustificationToTop();
         else text->GetTextProperty()->SetVerticalJustificationToCentered();
-        const std::string fitted = fit_width(text->GetTextProperty(), content, viewport_.width_px - at_x - 2.0);
+        const std::string fitted = fit_width(text->GetTextProperty(), content, column.width_px - at_x - 2.0);
         text->SetInput(fitted.c_str());
         text->SetPosition(at_x, at_y);
         notes_.push_back(text);
@@ -292,7 +325,7 @@ double StructureView::lay_out_legend(double s) {
     }
     // Under the entries (at the foot of the view when they are few).
     if (summary_.mirrored) {
-        const double top = std::min(y + 4 * s, viewport_.height_px * 0.06 + 24 * s);
+        const double top = std::min(y + 4 * s, column.height_px * 0.06 + 24 * s);
         const int lines = add_text("half model,\ndrawn mirrored\nabout x = " + format("%g", summary_.mirror_x), 12 * s, x, top, true);
         y = top - 14 * lines * s;
     }

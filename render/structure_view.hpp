@@ -2,10 +2,12 @@
 // field (fixed range over the run, labelled colour bar), then the layers the series needs (its
 // initial shape, the base, contact forces, plastic hinges, supports, loads; layer_list.hpp) and
 // a legend of exactly those layers. The camera is fixed from the bounds of the whole motion and
-// the room the layers ask for, so frames do not jump, with true aspect ratio.
+// the room the layers ask for, so frames do not jump, with true aspect ratio. Where the colour
+// bar and the legend go is the frame's layout (frame_layout.hpp).
 #pragma once
 
 #include "flat_marks.hpp"
+#include "frame_layout.hpp"
 #include "layer.hpp"
 #include "series_summary.hpp"
 
@@ -27,18 +29,20 @@ class vtkUnstructuredGrid;
 
 namespace plastica::render {
 
-struct Viewport {
-    double x0, y0, x1, y1; // normalised window coordinates
-    int width_px, height_px;
-};
-
 class StructureView {
 public:
-    StructureView(const SeriesSummary& summary, std::vector<std::unique_ptr<Layer>> layers, const Viewport& viewport,
+    StructureView(const SeriesSummary& summary, std::vector<std::unique_ptr<Layer>> layers, const FrameLayout& layout,
                   double text_scale);
     ~StructureView();
 
+    // The world box (x min, x max, y min, y max) the view must show: the motion's bounds, a
+    // margin and the room the layers ask for; `size` is the larger side of the bounds.
+    static void view_box(const SeriesSummary& summary, const std::vector<std::unique_ptr<Layer>>& layers, double box[4],
+                         double& size);
+
     vtkRenderer* renderer() { return renderer_; }
+    // The colour bar's and the legend's own renderer, or null where they share the structure's.
+    vtkRenderer* legend_renderer() { return layout_.legend ? legend_renderer_.Get() : nullptr; }
     void show(vtkUnstructuredGrid* step);
 
 private:
@@ -48,11 +52,15 @@ private:
     void add_legend(double text_scale);
     // Lays the legend's marks and text out at a text scale; returns how far down it reached.
     double lay_out_legend(double text_scale);
+    // The renderer, its size and the column the colour bar and the legend take in it.
+    struct LegendColumn;
+    LegendColumn legend_column() const;
 
     const SeriesSummary& summary_;
     std::vector<std::unique_ptr<Layer>> layers_;
+    FrameLayout layout_;
     Viewport viewport_;
-    vtkNew<vtkRenderer> renderer_;
+    vtkNew<vtkRenderer> renderer_, legend_renderer_;
     vtkNew<vtkLookupTable> colours_;
     vtkNew<vtkGeometryFilter> geometry_;
     vtkNew<vtkRibbonFilter> ribbon_, outline_;

@@ -5,6 +5,7 @@
 #include "charts.hpp"
 #include "contact_sheet.hpp"
 #include "figure_text.hpp"
+#include "frame_layout.hpp"
 #include "legend_corner.hpp"
 #include "palette.hpp"
 #include "png_file.hpp"
@@ -627,4 +628,51 @@ TEST_CASE("A contact sheet's grid is no larger than its frames", "[render]") {
         CHECK(dims[0] == 40 * c[1]);
         CHECK(dims[1] == 20 * c[2]);
     }
+}
+
+TEST_CASE("A frame's layout draws a wide structure across the picture and a compact one beside the chart", "[render][layout]") {
+    // A box about as tall as wide (the ring with its base and load) keeps the chart beside it.
+    const FrameLayout ring = choose_frame_layout(2.4, 2.6, 1280, 720);
+    CHECK_FALSE(ring.legend);
+    CHECK(ring.structure.x1 == Approx(0.57));
+    CHECK(ring.chart[0] == Approx(0.57));
+    // So does a frame 1.4 times as wide as tall: across the picture, under a band that leaves the
+    // chart room, it would be drawn smaller.
+    const FrameLayout portal = choose_frame_layout(9.9, 7.1, 1280, 720);
+    CHECK_FALSE(portal.legend);
+    // A flat beam goes across the whole width, its legend and the chart beneath it, in three
+    // viewports that do not overlap; it is drawn more than twice as large as beside the chart.
+    const FrameLayout beam = choose_frame_layout(10.8, 2.0, 1280, 720);
+    REQUIRE(beam.legend);
+    CHECK(beam.structure.x0 == 0.0);
+    CHECK(beam.structure.x1 == 1.0);
+    CHECK(beam.structure.y1 == Approx(1.0 - band));
+    CHECK(beam.legend->y1 == Approx(beam.structure.y0));
+    CHECK(beam.chart[3] == Approx(beam.structure.y0));
+    CHECK(beam.legend->x1 == Approx(beam.chart[0]));
+    CHECK(structure_scale(beam, 10.8, 2.0) > 2.0 * structure_scale(choose_frame_layout(2.0, 2.0, 1280, 720), 10.8, 2.0));
+    // However flat, the chart keeps close to half the height under the title band.
+    const FrameLayout strip = choose_frame_layout(100.0, 1.0, 1280, 720);
+    CHECK(strip.structure.y0 >= 0.3 * (1.0 - band) - 1e-12);
+    CHECK(strip.structure.y1 - strip.structure.y0 >= 0.3 * (1.0 - band) - 1e-12);
+}
+
+TEST_CASE("A flat beam's drawing spans the picture's width, above its legend and chart", "[render][layout]") {
+    unsetenv("DISPLAY");
+    const fs::path beam = solved_series("gallery/beam_large_deflection", 1000, "wide");
+    RenderOptions o = small(beam / "pictures");
+    o.width = 1280;
+    o.height = 720;
+    render_series(beam.string(), o);
+    auto frame = read_png(last_frame(beam / "pictures").string());
+    // The ribbon's dark outline: the columns it reaches.
+    const auto outline = [](Pixel p) { return is(p, colour::outline); };
+    int first = -1, last = -1;
+    for (int x = 0; x < 1280; ++x)
+        if (count_pixels(frame, outline, x / 1280.0, (x + 1) / 1280.0, band_bottom, 0.6) > 0) {
+            if (first < 0) first = x;
+            last = x;
+        }
+    // Beside the chart the beam spanned 500 of 1280 pixels.
+    CHECK(last - first > 0.7 * 1280);
 }
