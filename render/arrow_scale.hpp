@@ -10,6 +10,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,8 @@ public:
     void attach(const ViewGeometry& view, const AddProp& add, Rgb colour);
     void clear();
     // A value at the tail of an arrow pointing along (dx, dy); a value already written in this
-    // frame is not written again (a line load's equal nodal forces), and at most six are.
+    // frame is not written again (a line load's equal nodal forces), nor one that would cover
+    // another, and at most six are. Values stay inside the drawing's sides.
     void add(const double tail[2], double dx, double dy, const std::string& text);
 
 private:
@@ -44,6 +46,7 @@ private:
     Rgb colour_{0, 0, 0};
     std::vector<vtkSmartPointer<vtkTextActor>> actors_;
     std::vector<std::string> written_;
+    std::vector<std::array<double, 4>> boxes_; // the written values' world boxes: x0, x1, y0, y1
     std::size_t used_ = 0;
 };
 

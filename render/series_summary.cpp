@@ -60,6 +60,15 @@ std::string array_unit(const SeriesSummary& s, const std::string& array) {
     }
 }
 
+std::string array_unit_or_dimension(const SeriesSummary& s, const std::string& array) {
+    if (std::string unit = array_unit(s, array); !unit.empty()) return unit;
+    try {
+        return result::unit(result::find(array), "length", "force");
+    } catch (const std::out_of_range&) {
+        return {};
+    }
+}
+
 bool on_mirror_line(const SeriesSummary& summary, const double* initial_position) {
     const double x = initial_position[0];
     return summary.mirrored && std::abs(x - summary.mirror_x) <= 1e-9 * (1.0 + std::abs(x));

@@ -84,6 +84,9 @@ std::string with_unit(const std::string& label, const std::string& unit);
 // The unit of a result array by what it holds (moments force·length, forces, lengths, rotations
 // in rad); empty for shares and ratios or when the scene names no units.
 std::string array_unit(const SeriesSummary& summary, const std::string& array);
+// The unit, or where the scene names none, what the value is in the scene's own consistent units
+// ("force·length", "length"); empty for shares and ratios.
+std::string array_unit_or_dimension(const SeriesSummary& summary, const std::string& array);
 
 // Throws RenderError naming the step file, or listing the arrays when `field` is not one of them.
 // magnify: the factor displacements are drawn with; 0 chooses one: 1 when the largest

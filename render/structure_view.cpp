@@ -226,9 +226,12 @@ void StructureView::add_colour_bar(double text_scale) {
     style_text(colour_bar_->GetTitleTextProperty(), 15 * text_scale, true);
     style_text(colour_bar_->GetLabelTextProperty(), 13 * text_scale);
     colour_bar_->GetTitleTextProperty()->SetJustificationToLeft();
+    // The top label is centred on the bar's end: half a label's height between the title and the
+    // bar keeps it off the title.
+    colour_bar_->SetVerticalTitleSeparation(static_cast<int>(std::ceil(0.5 * 13 * text_scale)) + 1);
     // The unit on a line of its own, and the name broken where the column is too narrow for it
     // (a contact sheet's tile): the column from the bar's left edge to the picture's.
-    const std::string unit = array_unit(summary_, summary_.field.name);
+    const std::string unit = array_unit_or_dimension(summary_, summary_.field.name);
     colour_bar_->SetTitle((fit_width(colour_bar_->GetTitleTextProperty(), readable(summary_.field.name), column.title_room) +
                            (unit.empty() ? "" : "\n(" + unit + ")")).c_str());
     column.renderer->AddViewProp(colour_bar_);

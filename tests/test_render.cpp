@@ -2,6 +2,7 @@
 // the pixels of the PNGs: sizes, layers present or left out, and a chart that follows the data.
 #include "render_helpers.hpp"
 
+#include "arrow_scale.hpp"
 #include "charts.hpp"
 #include "contact_sheet.hpp"
 #include "figure_text.hpp"
@@ -15,6 +16,7 @@
 #include "series_summary.hpp"
 
 #include <catch2/catch.hpp>
+#include <vtkTextActor.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -675,4 +677,32 @@ TEST_CASE("A flat beam's drawing spans the picture's width, above its legend and
         }
     // Beside the chart the beam spanned 500 of 1280 pixels.
     CHECK(last - first > 0.7 * 1280);
+}
+
+TEST_CASE("Values beside arrows stay inside the drawing and never cover one another", "[render][legend]") {
+    ViewGeometry view;
+    view.view[0] = 0.0, view.view[1] = 12.8, view.view[2] = 0.0, view.view[3] = 7.2;
+    view.drawing_right = 10.0;
+    view.world_per_pixel = 0.01;
+    std::vector<vtkTextActor*> written;
+    ArrowLabels labels;
+    labels.attach(view, [&](vtkProp* prop, bool) { written.push_back(vtkTextActor::SafeDownCast(prop)); }, colour::load);
+    const auto shown = [&] {
+        return std::count_if(written.begin(), written.end(), [](vtkTextActor* a) { return a->GetVisibility(); });
+    };
+    // Downward arrows at the drawing's left edge and 0.1 (10 pixels) beside it: the first value is
+    // moved in from the edge, the second, which would cover it, is left out; one further along is
+    // written.
+    const double at_edge[2] = {0.0, 5.0}, beside[2] = {0.1, 5.0}, further[2] = {5.0, 5.0};
+    labels.add(at_edge, 0.0, -1.0, "0.625");
+    labels.add(beside, 0.0, -1.0, "1.25");
+    CHECK(shown() == 1);
+    REQUIRE(!written.empty());
+    CHECK(written[0]->GetPosition()[0] > 0.1);
+    labels.add(further, 0.0, -1.0, "1.25");
+    CHECK(shown() == 2);
+    // A new frame starts afresh.
+    labels.clear();
+    labels.add(beside, 0.0, -1.0, "1.25");
+    CHECK(shown() == 1);
 }
