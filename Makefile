@@ -21,10 +21,13 @@ build: deps $(BUILD)/CMakeCache.txt
 # The headline job: the elastic ring, then the inelastic ring with the elastic curve in its chart
 # and its shapes beside. The elastic ring is drawn while the inelastic one is solved and drawn: each
 # picture stage leaves a core idle at its start and its end, which the other fills.
+# The two drawings share the cores: half each (one drawing process per core in all, where each on
+# its own would start one per core and pay for two offscreen contexts on one core).
 ifeq ($(SCENE),models/ring_inelastic.toml)
+DRAW_JOBS = $(shell n=$$(( $(JOBS) / 2 )); [ $$n -ge 1 ] || n=1; echo $$n)
 RUN_FIRST = $(BUILD)/cli/plastica run models/ring_elastic.toml -q --no-render && \
-	{ $(BUILD)/cli/plastica render out/ring_elastic -q & elastic=$$!; } &&
-RUN_ARGS  = --overlay out/ring_elastic --shapes 25,50,75,100
+	{ $(BUILD)/cli/plastica render out/ring_elastic -q -j $(DRAW_JOBS) & elastic=$$!; } &&
+RUN_ARGS  = --overlay out/ring_elastic --shapes 25,50,75,100 -j $(DRAW_JOBS)
 RUN_LAST  = ; status=$$?; wait $$elastic && exit $$status
 endif
 
