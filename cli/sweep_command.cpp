@@ -37,8 +37,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::atomic<bool> stop_requested{false};
-extern "C" void request_sweep_stop(int) { stop_requested = true; }
+std::atomic<bool> sweep_stop_requested{false};
+extern "C" void request_sweep_stop(int) { sweep_stop_requested = true; }
 
 std::vector<std::string> split(const std::string& text, char by) {
     std::vector<std::string> parts;
@@ -234,8 +234,8 @@ int sweep_command(const Args& args) {
     const std::string program = self();
     std::map<pid_t, std::string> running;
     std::size_t next = 0, skipped = 0;
-    while ((next < plan.ids.size() && !stop_requested) || !running.empty()) {
-        while (!stop_requested && next < plan.ids.size() && static_cast<int>(running.size()) < jobs) {
+    while ((next < plan.ids.size() && !sweep_stop_requested) || !running.empty()) {
+        while (!sweep_stop_requested && next < plan.ids.size() && static_cast<int>(running.size()) < jobs) {
             const std::size_t r = next++;
             if (run_finished(dir, plan.ids[r])) {
                 ++skipped;
@@ -254,7 +254,7 @@ int sweep_command(const Args& args) {
     if (skipped > 0) std::cout << skipped << " runs had finished before and were kept\n";
     const int code = report(dir, at);
     if (!vm.count("no-charts")) draw_charts(dir, scene, vm.count("sample") > 0);
-    return stop_requested ? interrupted : code;
+    return sweep_stop_requested ? interrupted : code;
 }
 
 int merge_command(const Args& args) {

@@ -8,7 +8,7 @@ namespace plastica {
 
 namespace {
 
-std::string number(double v) {
+std::string warning_number(double v) {
     std::ostringstream s;
     s.precision(3);
     s << v;
@@ -37,7 +37,7 @@ std::vector<std::string> scene_warnings(const Model& model) {
         if (!s.steel || !(s.steel->E > 0.0)) continue;
         const double ratio = s.steel->fy / s.steel->E;
         if (ratio < 1e-5 || ratio > 2e-2)
-            warnings.push_back("section '" + s.name + "': its material's fy/E is " + number(ratio) +
+            warnings.push_back("section '" + s.name + "': its material's fy/E is " + warning_number(ratio) +
                                ", outside 1e-5 … 2e-2 (steels lie near 1e-3): are E and fy in the same units?");
     }
     // A section deeper than a tenth of the whole structure: a depth in millimetres on members in
@@ -48,7 +48,7 @@ std::vector<std::string> scene_warnings(const Model& model) {
     for (const SectionSpec& s : model.sections) {
         const double depth = section_depth(s);
         if (extent > 0.0 && depth > 0.1 * extent)
-            warnings.push_back("section '" + s.name + "': " + number(depth) + " deep on a structure " + number(extent) +
+            warnings.push_back("section '" + s.name + "': " + warning_number(depth) + " deep on a structure " + warning_number(extent) +
                                " across, more than a tenth of it: are the section and the geometry in the same length unit?");
     }
     // A spring whose stiffness dwarfs every element's axial stiffness EA/L: its penalty sets
@@ -63,8 +63,8 @@ std::vector<std::string> scene_warnings(const Model& model) {
     double spring = 0.0;
     for (const FoundationSpring& f : model.springs) spring = std::max({spring, f.kx, f.ky});
     if (stiffest > 0.0 && spring > 1e6 * stiffest)
-        warnings.push_back("a foundation spring of stiffness " + number(spring) + " is " + number(spring / stiffest) +
-                           " times the stiffest element's EA/L (" + number(stiffest) +
+        warnings.push_back("a foundation spring of stiffness " + warning_number(spring) + " is " + warning_number(spring / stiffest) +
+                           " times the stiffest element's EA/L (" + warning_number(stiffest) +
                            "): its round-off may stop the run; a penalty of 1e2 to 1e4 times that holds as well");
     return warnings;
 }

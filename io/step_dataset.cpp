@@ -55,9 +55,6 @@ result::HingeCode hinge_code(HingeState state) {
     return result::HingeCode::elastic;
 }
 
-std::vector<double>& real(XmlArray& a) { return std::get<std::vector<double>>(a.values); }
-std::vector<std::int32_t>& integer(XmlArray& a) { return std::get<std::vector<std::int32_t>>(a.values); }
-
 void set3(XmlArray& a, std::size_t tuple, double x, double y, double z) {
     double* v = &real(a)[3 * tuple];
     v[0] = x;

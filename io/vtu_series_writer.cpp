@@ -62,11 +62,6 @@ void VtuSeriesWriter::remove_earlier_steps() noexcept {
     earlier_steps_.clear();
 }
 
-namespace {
-std::vector<double>& real(XmlArray& a) { return std::get<std::vector<double>>(a.values); }
-std::vector<std::int32_t>& integer(XmlArray& a) { return std::get<std::vector<std::int32_t>>(a.values); }
-} // namespace
-
 void VtuSeriesWriter::write_step(const StepResult& r) {
     const double time = options_.time == SeriesTime::step ? static_cast<double>(r.step) : r.arc_length;
     const XmlDataset grid = dataset_(r, time);

@@ -19,6 +19,10 @@ struct XmlArray {
     std::size_t tuples() const;
 };
 
+// The values of an array known to be real, or integer.
+inline std::vector<double>& real(XmlArray& a) { return std::get<std::vector<double>>(a.values); }
+inline std::vector<std::int32_t>& integer(XmlArray& a) { return std::get<std::vector<std::int32_t>>(a.values); }
+
 // A real array of `tuples` × `components` zeros.
 XmlArray real_array(std::string name, std::size_t tuples, int components = 1);
 // An integer array of `tuples` zeros.

@@ -25,7 +25,7 @@ std::string edited(std::string text, const std::vector<std::pair<std::string, st
     return text;
 }
 
-std::string ring(const std::vector<std::pair<std::string, std::string>>& edits) {
+std::string inelastic_ring(const std::vector<std::pair<std::string, std::string>>& edits) {
     return edited(embedded_scene("ring_inelastic"), edits);
 }
 
@@ -125,7 +125,7 @@ std::vector<StabilityCase> robustness_cases() {
     const auto done = RunStatus::completed;
     const std::string name = "inelastic ring";
     std::vector<StabilityCase> cases;
-    cases.push_back({name, "half, as shipped", ring({}), done, near_shipped(0.0)});
+    cases.push_back({name, "half, as shipped", inelastic_ring({}), done, near_shipped(0.0)});
     // Symmetric, the whole ring is the half ring: every step's load to 1e-6 (the residual
     // tolerance of 1e-5 bounds each step's error, and both take the same path through it).
     cases.push_back({name, "whole (no symmetry)", embedded_scene("gallery/ring_full"), done, equals_half_ring(1e-6)});
@@ -136,7 +136,7 @@ std::vector<StabilityCase> robustness_cases() {
                             {{"[[foundation]]", "[[support]]\nat = [0.0, 200.0]\nfix = [\"ux\", \"rz\"]\n\n[[foundation]]"}}),
                      done, equals_half_ring(1e-6)});
     for (const auto& [factor, fy] : {std::pair{"fy × 1/2", "18259.0"}, std::pair{"fy × 1/4", "9129.5"}})
-        cases.push_back({name, factor, ring({{"fy = 36518.0", std::string("fy = ") + fy}}), done, nullptr});
+        cases.push_back({name, factor, inelastic_ring({{"fy = 36518.0", std::string("fy = ") + fy}}), done, nullptr});
     // The whole ring yielding early: its load is a tenth of the shipped one, so the membrane's
     // round-off floor is near the tolerance, and past δ ≈ 5 it sways off the symmetric path
     // (the half ring cannot; the two differ by up to 7 %). Fixed increments, as shipped.
@@ -152,28 +152,28 @@ std::vector<StabilityCase> robustness_cases() {
     // Ten times thicker (I × 100, same A): past its peak near δ = 12 the hinges form a softening
     // mechanism; fixed steps of 0.5 need about 700 steps (half of them cut), adaptive ones 350.
     cases.push_back({name, "thickness × 10, adaptive",
-                     ring({{"b = 9.128709291752768", "b = 0.9128709291752768"},
+                     inelastic_ring({{"b = 9.128709291752768", "b = 0.9128709291752768"},
                            {"h = 0.010954451150103323", "h = 0.10954451150103323"},
                            {"adaptive = false", "adaptive = true"}}),
                      done, past_peak(5.0)});
     for (const auto& [how, target] : {std::pair{"pushed to 150", "150.0"}, std::pair{"pushed to 190", "190.0"}})
-        cases.push_back({name, how, ring({{"target_displacement = 100.0", std::string("target_displacement = ") + target}}),
+        cases.push_back({name, how, inelastic_ring({{"target_displacement = 100.0", std::string("target_displacement = ") + target}}),
                          done, nullptr});
     for (int elements : {10, 20, 100, 200, 400})
         cases.push_back({name, std::to_string(elements) + " elements",
-                         ring({{"elements = 50", "elements = " + std::to_string(elements)}}), done,
+                         inelastic_ring({{"elements = 50", "elements = " + std::to_string(elements)}}), done,
                          near_shipped(elements >= 20 ? 0.005 : 0.01)});
     for (int fibres : {4, 20, 100})
         cases.push_back({name, std::to_string(fibres) + " fibres",
-                         ring({{"fibres = 10", "fibres = " + std::to_string(fibres)}}), done,
+                         inelastic_ring({{"fibres = 10", "fibres = " + std::to_string(fibres)}}), done,
                          near_shipped(fibres >= 20 ? 0.005 : 0.02)});
     for (const char* increment : {"2.0", "1.0", "0.1"})
         cases.push_back({name, std::string("increment ") + increment,
-                         ring({{"increment = 0.5", std::string("increment = ") + increment}}), done, near_shipped(0.002)});
-    cases.push_back({name, "adaptive increments", ring({{"adaptive = false", "adaptive = true"}}), done,
+                         inelastic_ring({{"increment = 0.5", std::string("increment = ") + increment}}), done, near_shipped(0.002)});
+    cases.push_back({name, "adaptive increments", inelastic_ring({{"adaptive = false", "adaptive = true"}}), done,
                      near_shipped(0.002)});
     cases.push_back({name, "arc length, adaptive",
-                     ring({{"scheme = \"displacement_control\"", "scheme = \"arc_length\""},
+                     inelastic_ring({{"scheme = \"displacement_control\"", "scheme = \"arc_length\""},
                            {"adaptive = false", "adaptive = true"}}),
                      done, near_shipped(0.002)});
     // Distributed plasticity with adaptive increments: fibres re-decided at equilibrium take a few

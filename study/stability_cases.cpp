@@ -52,7 +52,7 @@ auto deflection_near(double alpha, double tolerance) {
     };
 }
 
-std::string ring(double ky) {
+std::string ring_on_unilateral_base(double ky) {
     return R"([scene]
 name = "ring"
 [[material]]
@@ -139,7 +139,7 @@ std::vector<StabilityCase> stability_cases() {
     // as its cause, and keep every converged step in equilibrium (not wander, not produce NaN,
     // not accept steps out of balance).
     for (double ky : {1e0, 1e4, 1e8, 1e10, 1e12})
-        cases.push_back({"ring on a unilateral base", "ky = " + sci(ky), ring(ky),
+        cases.push_back({"ring on a unilateral base", "ky = " + sci(ky), ring_on_unilateral_base(ky),
                          ky < 1e11 ? completed : RunStatus::no_convergence,
                          [ky](const std::vector<StepResult>& s, const RunSummary& summary) -> std::string {
                              const StepResult& r = s.back();

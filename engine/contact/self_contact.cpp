@@ -15,7 +15,7 @@ namespace {
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a[0] * b[1] - a[1] * b[0]; }
+double perp_dot(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a[0] * b[1] - a[1] * b[0]; }
 
 // The nodes within `radius` of `from` along the elements (undeformed lengths), sorted.
 std::vector<int> nodes_within(int from, double radius, const std::vector<std::vector<std::pair<int, double>>>& links) {
@@ -144,7 +144,7 @@ void SelfContact::evaluate_pair(SurfaceContact& c) const {
         // d = σ·A/L, A = e × r the doubled area of (a, b, x), e = b − a, r = x − a, L = |e|.
         const Eigen::Vector2d a = position(c.segment[0]), b = position(c.segment[1]);
         const Eigen::Vector2d e = b - a, r = x - a;
-        const double L = e.norm(), area = cross(e, r);
+        const double L = e.norm(), area = perp_dot(e, r);
         const double sigma = area >= 0.0 ? 1.0 : -1.0;
         const Eigen::Vector2d t = e / L;
         const Eigen::Vector2d je(-e[1], e[0]), jr(-r[1], r[0]);

@@ -6,7 +6,7 @@
 namespace plastica {
 
 namespace {
-constexpr int max_element_iterations = 40;
+constexpr int max_condensation_iterations = 40;
 // The inner nodes are in equilibrium when their forces are this small against the element's.
 constexpr double inner_tolerance = 1e-10;
 // The segments' parallel elastic stiffness (the plain law's is 1e-9): an inner node between
@@ -186,7 +186,7 @@ void SegmentedPlasticityLaw<InnerDofs>::trial_response(const Eigen::Vector3d& e,
     // Newton on the inner nodes with a backtracking line search: the fibres' piecewise-linear
     // law can make a full step jump across a kink, and a shortened one lands between.
     // A state whose inner nodes are not in equilibrium is not accepted (states_consistent).
-    for (int it = 0; it < max_element_iterations && !inner_converged_; ++it) {
+    for (int it = 0; it < max_condensation_iterations && !inner_converged_; ++it) {
         step_ = residual_;
         solve_inner(step_);
         line_start_ = inner;
