@@ -2,6 +2,8 @@
 
 #include "section/fibre_section.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace plastica {
@@ -39,10 +41,17 @@ const char* dof_name(int dof) {
     return names[dof];
 }
 
-Json dof(const Model& m, const DofRef& d) {
-    const Node& n = m.nodes.at(static_cast<std::size_t>(d.node));
-    return {{"at", {n.x, n.y}}, {"dof", dof_name(d.dof)}};
+// A node's position as the user placed it: a coordinate within round-off of zero (a node on a
+// ring's axis, R·cos 90° = 6e-15) reads 0.
+Json position(const Model& m, int node) {
+    double extent = 0.0;
+    for (const Node& n : m.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
+    const Node& n = m.nodes.at(static_cast<std::size_t>(node));
+    const auto clean = [extent](double v) { return std::abs(v) <= 1e-12 * extent ? 0.0 : v; };
+    return {clean(n.x), clean(n.y)};
 }
+
+Json dof(const Model& m, const DofRef& d) { return {{"at", position(m, d.node)}, {"dof", dof_name(d.dof)}}; }
 
 } // namespace
 
@@ -69,8 +78,7 @@ Json describe_model(const Model& m) {
         Json fixed = Json::array();
         for (int k = 0; k < dofs_per_node; ++k)
             if (s.fixed[static_cast<std::size_t>(k)]) fixed.push_back(dof_name(k));
-        const Node& n = m.nodes.at(static_cast<std::size_t>(s.node));
-        supports.push_back({{"at", {n.x, n.y}}, {"fixed", fixed}});
+        supports.push_back({{"at", position(m, s.node)}, {"fixed", fixed}});
     }
     j["supports"] = supports;
     // Loads per pattern: nodal loads (point and lumped line loads) summed, and how many nodes

@@ -741,6 +741,15 @@ TEST_CASE("plastica report writes one page a browser shows whole, and compare --
     CHECK_THAT(dom, Catch::Contains("completed: target displacement reached"));
     CHECK_THAT(dom, Catch::Contains("Newton iterations"));
     CHECK_THAT(dom, Catch::Contains("peak P (at top displacement)"));
+    // The model as the browser shows it: its section with the squash load, both supports, the
+    // loads and the analysis settings.
+    CHECK_THAT(dom, Catch::Contains("<h2>Model</h2>"));
+    CHECK_THAT(dom, Catch::Contains("N_y (squash load)"));
+    CHECK_THAT(dom, Catch::Contains("<h3>Supports</h3>"));
+    CHECK_THAT(dom, Catch::Contains("(0, 200)"));
+    CHECK_THAT(dom, Catch::Contains("<h3>Loads by pattern"));
+    CHECK_THAT(dom, Catch::Contains("<h3>Analysis</h3>"));
+    CHECK_THAT(dom, Catch::Contains("displacement_control"));
     // Drawn to pixels by the same browser.
     const fs::path shot = moved.parent_path() / "page.png";
     REQUIRE(std::system(("timeout 120 chromium --headless --no-sandbox --disable-gpu --window-size=1280,2000 --screenshot='" +
