@@ -41,21 +41,29 @@ const char* dof_name(int dof) {
     return names[dof];
 }
 
+// The largest coordinate of any node.
+double extent(const Model& m) {
+    double e = 0.0;
+    for (const Node& n : m.nodes) e = std::max({e, std::abs(n.x), std::abs(n.y)});
+    return e;
+}
+
 // A node's position as the user placed it: a coordinate within round-off of zero (a node on a
 // ring's axis, R·cos 90° = 6e-15) reads 0.
-Json position(const Model& m, int node) {
-    double extent = 0.0;
-    for (const Node& n : m.nodes) extent = std::max({extent, std::abs(n.x), std::abs(n.y)});
+Json position(const Model& m, int node, double extent) {
     const Node& n = m.nodes.at(static_cast<std::size_t>(node));
     const auto clean = [extent](double v) { return std::abs(v) <= 1e-12 * extent ? 0.0 : v; };
     return {clean(n.x), clean(n.y)};
 }
 
-Json dof(const Model& m, const DofRef& d) { return {{"at", position(m, d.node)}, {"dof", dof_name(d.dof)}}; }
+Json dof(const Model& m, const DofRef& d, double extent) {
+    return {{"at", position(m, d.node, extent)}, {"dof", dof_name(d.dof)}};
+}
 
 } // namespace
 
 Json describe_model(const Model& m) {
+    const double size = extent(m);
     Json j;
     if (!m.report.length_unit.empty() || !m.report.force_unit.empty())
         j["units"] = {{"length", m.report.length_unit}, {"force", m.report.force_unit}};
@@ -78,7 +86,7 @@ Json describe_model(const Model& m) {
         Json fixed = Json::array();
         for (int k = 0; k < dofs_per_node; ++k)
             if (s.fixed[static_cast<std::size_t>(k)]) fixed.push_back(dof_name(k));
-        supports.push_back({{"at", position(m, s.node)}, {"fixed", fixed}});
+        supports.push_back({{"at", position(m, s.node, size)}, {"fixed", fixed}});
     }
     j["supports"] = supports;
     // Loads per pattern: nodal loads (point and lumped line loads) summed, and how many nodes
@@ -105,7 +113,7 @@ Json describe_model(const Model& m) {
                      {"increment", a.initial_increment},
                      {"adaptive", a.adaptive},
                      {"target", target(a.target_load_factor, a.target_displacement)},
-                     {"control", dof(m, a.control)},
+                     {"control", dof(m, a.control, size)},
                      {"residual_tolerance", a.residual_tolerance},
                      {"max_iterations", a.max_iterations},
                      {"max_steps", a.max_steps}};

@@ -48,8 +48,8 @@ std::string readable(std::string name) {
 
 StructureView::StructureView(const SeriesSummary& summary, std::vector<std::unique_ptr<Layer>> layers,
                              const FrameLayout& layout, double text_scale)
-    : summary_(summary), layers_(std::move(layers)), layout_(layout), viewport_(layout.structure) {
-    renderer_->SetViewport(viewport_.x0, viewport_.y0, viewport_.x1, viewport_.y1);
+    : summary_(summary), layers_(std::move(layers)), layout_(layout) {
+    renderer_->SetViewport(layout_.structure.x0, layout_.structure.y0, layout_.structure.x1, layout_.structure.y1);
     renderer_->SetBackground(colour::background.red(), colour::background.green(), colour::background.blue());
     if (layout_.legend) {
         const Viewport& v = *layout_.legend;
@@ -125,19 +125,19 @@ ViewGeometry StructureView::fix_camera() {
     const double width = box[1] - box[0], height = box[3] - box[2];
     // The structure gets the viewport minus the legend's column (if it has one), at true aspect ratio.
     const double side_column = layout_.legend_column;
-    const double usable_w = viewport_.width_px * (1.0 - side_column), usable_h = viewport_.height_px;
+    const double usable_w = layout_.structure.width_px * (1.0 - side_column), usable_h = layout_.structure.height_px;
     ViewGeometry view;
     view.world_per_pixel = std::max(width / usable_w, height / usable_h);
     // The ribbon's width follows the structure's size, up to what a structure about as wide as it
     // is tall gets beside the chart (wider drawings would make it a band).
-    const double picture_width = viewport_.width_px / (viewport_.x1 - viewport_.x0);
+    const double picture_width = layout_.structure.width_px / (layout_.structure.x1 - layout_.structure.x0);
     view.ribbon_width = std::min(0.012 * size, 0.005 * picture_width * view.world_per_pixel);
     view.size = size;
     view.mirrored = summary_.mirrored;
     view.mirror_x = summary_.mirror_x;
     const double cx = 0.5 * (box[0] + box[1]), cy = 0.5 * (box[2] + box[3]);
     view.view[0] = cx - 0.5 * usable_w * view.world_per_pixel;
-    view.view[1] = view.view[0] + viewport_.width_px * view.world_per_pixel;
+    view.view[1] = view.view[0] + layout_.structure.width_px * view.world_per_pixel;
     view.view[2] = cy - 0.5 * usable_h * view.world_per_pixel;
     view.view[3] = cy + 0.5 * usable_h * view.world_per_pixel;
     view.drawing_right = view.view[0] + (1.0 - side_column) * (view.view[1] - view.view[0]);
@@ -199,7 +199,7 @@ struct StructureView::LegendColumn {
 
 StructureView::LegendColumn StructureView::legend_column() const {
     if (!layout_.legend) { // the right-hand column of the structure's viewport
-        const double left = 1.0 - layout_.legend_column, w = viewport_.width_px, h = viewport_.height_px;
+        const double left = 1.0 - layout_.legend_column, w = layout_.structure.width_px, h = layout_.structure.height_px;
         return {renderer_.Get(), w, h, {left + 0.03, 0.50, (1.0 - left) - 0.05, 0.45}, (1.0 - left - 0.03) * w,
                 w * (left + 0.03), h * 0.42};
     }

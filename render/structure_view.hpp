@@ -59,7 +59,6 @@ private:
     const SeriesSummary& summary_;
     std::vector<std::unique_ptr<Layer>> layers_;
     FrameLayout layout_;
-    Viewport viewport_;
     vtkNew<vtkRenderer> renderer_, legend_renderer_;
     vtkNew<vtkLookupTable> colours_;
     vtkNew<vtkGeometryFilter> geometry_;

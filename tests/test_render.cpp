@@ -34,7 +34,17 @@ std::string file_bytes(const fs::path& p) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-RenderOptions small(const fs::path& out, int every = 1) {
+RenderOptions small(const fs::path& out, int every = 1);
+
+// A frame's full size, 1280 × 720, where pixel positions are checked against a frame's layout.
+RenderOptions full_size(const fs::path& out) {
+    RenderOptions o = small(out);
+    o.width = 1280;
+    o.height = 720;
+    return o;
+}
+
+RenderOptions small(const fs::path& out, int every) {
     RenderOptions o;
     o.output = out.string();
     o.width = 640;
@@ -394,10 +404,7 @@ TEST_CASE("Every load shows by its components and the legend names only the supp
     // sway load is drawn as its own arrow, pointing right, left of the frame at the beam's height,
     // not folded into a near-vertical resultant.
     const fs::path portal = solved_series("gallery/portal_frame", 1000, "components");
-    RenderOptions o = small(portal / "pictures");
-    o.width = 1280;
-    o.height = 720;
-    render_series(portal.string(), o);
+    render_series(portal.string(), full_size(portal / "pictures"));
     auto frame = read_png(last_frame(portal / "pictures").string());
     const auto load = [](Pixel p) { return is(p, colour::load); };
     CHECK(count_pixels(frame, load, 0.0, 0.085, 0.19, 0.26) > 40);
@@ -662,10 +669,7 @@ TEST_CASE("A frame's layout draws a wide structure across the picture and a comp
 TEST_CASE("A flat beam's drawing spans the picture's width, above its legend and chart", "[render][layout]") {
     unsetenv("DISPLAY");
     const fs::path beam = solved_series("gallery/beam_large_deflection", 1000, "wide");
-    RenderOptions o = small(beam / "pictures");
-    o.width = 1280;
-    o.height = 720;
-    render_series(beam.string(), o);
+    render_series(beam.string(), full_size(beam / "pictures"));
     auto frame = read_png(last_frame(beam / "pictures").string());
     // The ribbon's dark outline: the columns it reaches.
     const auto outline = [](Pixel p) { return is(p, colour::outline); };
