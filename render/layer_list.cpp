@@ -101,4 +101,17 @@ std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vt
     return layers;
 }
 
+std::vector<std::string> layer_choice_notes(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
+                                            vtkPolyData* base, const LayerChoice& choice) {
+    std::vector<std::string> notes;
+    auto named = [](const std::vector<std::string>& list, const char* name) { return std::find(list.begin(), list.end(), name) != list.end(); };
+    for (const LayerKind& k : kinds()) {
+        const bool hidden = !k.on_request && named(choice.hide, k.name), shown = k.on_request && named(choice.show, k.name);
+        if ((hidden || shown) && !k.make(summary, first_step, base))
+            notes.push_back(std::string(hidden ? "--hide " : "--show ") + k.name + " changes nothing: this series has no " + k.name +
+                            " to draw");
+    }
+    return notes;
+}
+
 } // namespace plastica::render

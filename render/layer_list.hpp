@@ -25,6 +25,12 @@ struct LayerChoice {
 std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
                                                 vtkPolyData* base, const LayerChoice& choice);
 
+// What --hide and --show could not do in this series, each saying why: a layer hidden that the
+// series would not draw anyway (no hinges in an elastic scene), or one asked for that it has
+// nothing for (no reactions). Names are checked by make_layers.
+std::vector<std::string> layer_choice_notes(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
+                                            vtkPolyData* base, const LayerChoice& choice);
+
 // The names --hide takes, in drawing order.
 std::vector<std::string> hideable_layers();
 // The names --show takes: layers drawn only on request.

@@ -1,4 +1,6 @@
 #include "series_summary.hpp"
+
+#include "figure_text.hpp"
 #include "render_error.hpp"
 #include "result_schema.hpp"
 
@@ -153,6 +155,9 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         if (!chosen.why_not.empty()) s.notes.push_back(chosen.why_not);
     } else {
         s.magnify = magnify;
+        if (magnify != 1.0 && !series.base_file.empty())
+            s.notes.push_back("--magnify " + number(magnify) + ": a fixed base is drawn where it is and a moving plate at " +
+                              number(magnify) + " times its travel, so a node drawn near a base may seem to pass through it");
     }
     std::string field = requested;
     const double inf = std::numeric_limits<double>::infinity();
@@ -160,6 +165,7 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
     double range[2] = {inf, -inf};
     std::vector<double> load_direction; // each node's first load direction (x, y)
     bool loads_turn = false;             // some node's load changes direction (a follower pressure)
+    std::vector<double> step_contact_force; // each step's largest contact force
     for (std::size_t k = 0; k < series.steps.size(); ++k) {
         const std::string& file = series.steps[k].file;
         auto grid = magnified(read_step(file), s.magnify);
@@ -220,14 +226,14 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         c.load = field_value(grid, result::name::load);
         if (grid->GetFieldData()->GetArray(result::name::contact_count)) c.contact_count = static_cast<int>(field_value(grid, result::name::contact_count));
         if (grid->GetFieldData()->GetArray(result::name::hinge_count)) c.hinge_count = static_cast<int>(field_value(grid, result::name::hinge_count));
+        step_contact_force.push_back(0.0);
         if (vtkDataArray* force = grid->GetPointData()->GetArray(result::name::contact_force)) {
             vtkDataArray* state = grid->GetPointData()->GetArray(result::name::contact);
             for (vtkIdType i = 0; i < force->GetNumberOfTuples(); ++i)
-                if (!state || state->GetComponent(i, 0) > 0) {
-                    const double f = tuple_magnitude(force, i);
-                    s.max_contact_force = std::max(s.max_contact_force, f);
-                    s.any_contact = s.any_contact || f > 0.0;
-                }
+                if (!state || state->GetComponent(i, 0) > 0)
+                    step_contact_force.back() = std::max(step_contact_force.back(), tuple_magnitude(force, i));
+            s.max_contact_force = std::max(s.max_contact_force, step_contact_force.back());
+            s.any_contact = s.any_contact || step_contact_force.back() > 0.0;
         }
         if (vtkDataArray* force = grid->GetPointData()->GetArray(result::name::surface_contact_force))
             for (vtkIdType i = 0; i < force->GetNumberOfTuples(); ++i)
@@ -292,7 +298,15 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
     }
     s.loads.by_components = !loads_turn;
     s.load_arrow_reference = s.loads.max_force;
-    if (s.load_axis_cut[1] > 0.0) s.load_arrow_reference *= std::min(1.0, s.load_axis_cut[1] / s.largest_load);
+    s.contact_arrow_reference = s.max_contact_force;
+    if (s.load_axis_cut[1] > 0.0) {
+        s.load_arrow_reference *= std::min(1.0, s.load_axis_cut[1] / s.largest_load);
+        double in_view = 0.0;
+        for (std::size_t k = 0; k < s.curve.size(); ++k)
+            if (s.curve[k].load >= s.load_axis_cut[0] && s.curve[k].load <= s.load_axis_cut[1])
+                in_view = std::max(in_view, step_contact_force[k]);
+        if (in_view > 0.0) s.contact_arrow_reference = in_view;
+    }
     if (s.mirrored) {
         const double lo = std::min(b[0], 2 * s.mirror_x - b[1]), hi = std::max(b[1], 2 * s.mirror_x - b[0]);
         b[0] = lo;

@@ -74,6 +74,10 @@ struct SeriesSummary {
     // where the load axis is cut, the largest while the load is in view (a base's penalty taking
     // over the load would otherwise shrink the arrow to a stub for the structure's own response).
     double load_arrow_reference = 0.0;
+    // The same for the arrows of contact forces: the largest contact force in the run, or, where
+    // the load axis is cut, the largest while the load is in view (after landing, the base's
+    // penalty holds the load and its contact forces would set the scale).
+    double contact_arrow_reference = 0.0;
     // Units the scene names (empty: none): of lengths and forces, and of the reported load and
     // displacement.
     std::string length_unit, force_unit, load_unit, displacement_unit;

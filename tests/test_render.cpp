@@ -7,6 +7,7 @@
 #include "contact_sheet.hpp"
 #include "figure_text.hpp"
 #include "frame_layout.hpp"
+#include "layer_list.hpp"
 #include "legend_corner.hpp"
 #include "palette.hpp"
 #include "png_file.hpp"
@@ -16,7 +17,9 @@
 #include "series_summary.hpp"
 
 #include <catch2/catch.hpp>
+#include <vtkPolyData.h>
 #include <vtkTextActor.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -164,6 +167,29 @@ TEST_CASE("Charts keep a structure's own response in view when a base takes over
     const SeriesSummary spread = summarise(open_series(ring.string()), "", 1.0);
     CHECK(spread.load_axis_cut[0] == 0.0);
     CHECK(spread.load_axis_cut[1] == 0.0);
+}
+
+TEST_CASE("Contact arrows are scaled to the forces while the load is in view", "[render]") {
+    unsetenv("DISPLAY");
+    // The cantilever bent down onto a floor: the floor's penalty then holds the load (200 against
+    // the cantilever's own 1.5), and its contact forces would shrink the arrows of the first
+    // touches to dots; they are drawn to the largest force while the load is in view instead.
+    const fs::path floor = solved_series("gallery/cantilever_onto_floor", 1, "contact_scale");
+    const SeriesSummary landed = summarise(open_series(floor.string()), "", 1.0);
+    REQUIRE(landed.load_axis_cut[1] > 0.0);
+    CHECK(landed.contact_arrow_reference > 0.0);
+    CHECK(landed.contact_arrow_reference < 0.1 * landed.max_contact_force);
+    const ResultSeries series = open_series(floor.string());
+    const auto layers = make_layers(landed, read_step(series.steps.front().file), read_base(series.base_file), {});
+    const auto contact = std::find_if(layers.begin(), layers.end(), [](const auto& l) {
+        return !l->legend().empty() && l->legend().front().text == "contact force";
+    });
+    REQUIRE(contact != layers.end());
+    CHECK_THAT((*contact)->note(), Catch::Contains("largest while the load is in view"));
+    // A ring whose contact spreads as its load rises keeps the largest in the run.
+    const fs::path ring = solved_series("ring_elastic", 50, "contact_scale_ring");
+    const SeriesSummary spread = summarise(open_series(ring.string()), "", 1.0);
+    CHECK(spread.contact_arrow_reference == spread.max_contact_force);
 }
 
 TEST_CASE("Supports and loads are drawn where the scene has them, and --hide leaves them out", "[render]") {
@@ -478,9 +504,30 @@ TEST_CASE("An option that cannot act says why and a chart mark that would sit on
     auto chart = read_png((pipe / "pictures" / "chart.png").string());
     CHECK(count_pixels(chart, [](Pixel p) { return is(p, colour::contact_force); }) == 0);
     CHECK(count_pixels(chart, [](Pixel p) { return is(p, colour::hinge_yielding_high); }) > 10); // first yield stays
-    // Magnification a factor can give is taken without a note.
+    // A factor is taken, and the note says how the bed is drawn beside the enlarged pipe.
     o.magnify = 5.0;
-    CHECK(render_series(pipe.string(), o).notes.empty());
+    const RenderReport enlarged = render_series(pipe.string(), o);
+    REQUIRE(enlarged.notes.size() == 1);
+    CHECK_THAT(enlarged.notes.front(), Catch::Contains("--magnify 5") && Catch::Contains("may seem to pass through it"));
+}
+
+TEST_CASE("Options that change nothing in a series say so", "[render]") {
+    unsetenv("DISPLAY");
+    // The elastic ring has no hinges and no moments at its supports' reactions to speak of,
+    // and --steps names the steps, so --every has nothing to choose.
+    const fs::path ring = solved_series("ring_elastic", 50, "no_ops");
+    RenderOptions o = small(ring / "pictures", 1);
+    o.hide = {"hinges", "loads"};
+    o.steps = {0, 200};
+    o.every = 7;
+    const RenderReport report = render_series(ring.string(), o);
+    REQUIRE(report.notes.size() == 2);
+    CHECK(report.notes[0] == "--hide hinges changes nothing: this series has no hinges to draw");
+    CHECK(report.notes[1] == "--every 7 changes nothing: --steps names the steps to draw");
+    // Without them: no note.
+    o.hide = {"loads"};
+    o.every = 1;
+    CHECK(render_series(ring.string(), o).notes.empty());
 }
 
 TEST_CASE("Labels of values keep every value apart", "[render][legend]") {

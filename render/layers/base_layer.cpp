@@ -44,7 +44,8 @@ public:
         add(anchors_.prop(), true);
     }
 
-    // A platen is drawn where the step has moved it.
+    // A platen is drawn where the step has moved it (its travel magnified as the structure's
+    // displacements are, so that what it presses stays on it).
     void show(vtkUnstructuredGrid* step) override {
         if (!base_data_->GetCellData()->GetArray(result::name::base_motion)) return;
         line_.clear();
@@ -85,8 +86,8 @@ private:
             }
             if (motion && step)
                 for (int k = 0; k < 2; ++k) {
-                    a[k] += load_factor * motion->GetComponent(first_line + c, k);
-                    b[k] += load_factor * motion->GetComponent(first_line + c, k);
+                    a[k] += summary_.magnify * load_factor * motion->GetComponent(first_line + c, k);
+                    b[k] += summary_.magnify * load_factor * motion->GetComponent(first_line + c, k);
                 }
             const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
             const double tx = (b[0] - a[0]) / length, ty = (b[1] - a[1]) / length;
