@@ -92,4 +92,15 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
     return std::nullopt;
 }
 
+std::vector<std::string> render_options_left_unused(const po::variables_map& vm, const std::string& why) {
+    po::options_description render("render");
+    add_render_options(render);
+    std::vector<std::string> notes;
+    for (const auto& option : render.options()) {
+        const std::string& name = option->long_name();
+        if (vm.count(name) && !vm[name].defaulted()) notes.push_back("--" + name + " changes nothing: " + why + " draws nothing");
+    }
+    return notes;
+}
+
 } // namespace plastica::cli

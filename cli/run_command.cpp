@@ -158,6 +158,10 @@ int run_command(const Args& args) {
     report.scene_file = scene_file;
     for (const Override& o : overrides) report.overrides.emplace_back(o.path, o.value);
     report.model = &model;
+    if (!draws) {
+        report.drawing_notes = render_options_left_unused(vm, vm.count("curves-only") ? "--curves-only" : "--no-render");
+        for (const std::string& note : report.drawing_notes) std::cerr << "plastica: note: " << note << "\n";
+    }
     const bool quiet = vm.count("quiet") > 0;
     Progress progress("solving", 20);
     const AnalysisSpec& a = model.analysis;

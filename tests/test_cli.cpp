@@ -434,6 +434,20 @@ TEST_CASE("A curves-only run writes curve.csv and run.json, no series, with the 
     CHECK(fs::exists(dir / "out" / "curve.csv"));
 }
 
+TEST_CASE("Drawing options given to a run that draws nothing say so", "[cli]") {
+    const fs::path out = scratch("unused_drawing_options");
+    const Result r = command("run " + model("ring_elastic.toml") + " -o " + out.string() + " --curves-only -q --magnify 5 --size 800x600");
+    CHECK(r.code == 0);
+    CHECK_THAT(r.output, Catch::Contains("note: --size changes nothing: --curves-only draws nothing"));
+    CHECK_THAT(r.output, Catch::Contains("note: --magnify changes nothing: --curves-only draws nothing"));
+    CHECK(read_json(out / "run.json").at("drawing_notes").size() == 2);
+    // Defaults given by nobody are no note.
+    const Result plain = command("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render -q --force");
+    CHECK(plain.code == 0);
+    CHECK_THAT(plain.output, !Catch::Contains("changes nothing"));
+    CHECK_FALSE(read_json(out / "run.json").contains("drawing_notes"));
+}
+
 TEST_CASE("run --set overrides scene keys and run.json records them", "[cli][overrides]") {
     const fs::path out = scratch("overrides");
     const Result r = command("run " + model("ring_inelastic.toml") + " --set section[ring].plasticity=distributed" +
