@@ -1,4 +1,5 @@
 #include "arrow_scale.hpp"
+#include "figure_text.hpp"
 #include "text_and_mirror.hpp"
 
 #include <vtkCoordinate.h>
@@ -78,6 +79,8 @@ void ArrowLabels::add(const double tail[2], double dx, double dy, const std::str
     actor->SetPosition(x, y);
     actor->SetVisibility(true);
 }
+
+std::string force_text(double value, const std::string& unit) { return number(value) + (unit.empty() ? "" : " " + unit); }
 
 std::string longest_arrow_note(double largest, const std::string& unit) {
     char text[64];

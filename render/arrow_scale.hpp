@@ -27,6 +27,9 @@ struct ArrowScale {
     double length(double force) const;
 };
 
+// A value as written beside an arrow or in a legend: "12.5 kN", or "12.5" without a unit.
+std::string force_text(double value, const std::string& unit);
+
 // The note under an arrow layer's legend entry: the longest arrow's force, with its unit.
 std::string longest_arrow_note(double largest, const std::string& unit);
 

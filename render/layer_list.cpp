@@ -83,16 +83,25 @@ std::vector<std::string> on_request_layers() {
     return names;
 }
 
-std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
-                                                vtkPolyData* base, const LayerChoice& choice) {
+namespace {
+
+bool named(const std::vector<std::string>& list, const char* name) { return std::find(list.begin(), list.end(), name) != list.end(); }
+
+void check_names(const LayerChoice& choice) {
     const std::vector<std::string> names = hideable_layers(), requested = on_request_layers();
     for (const std::string& h : choice.hide)
-        if (std::find(names.begin(), names.end(), h) == names.end())
+        if (!named(names, h.c_str()))
             throw RenderError("--hide takes " + listed(names) + " (got '" + h + "')");
     for (const std::string& s : choice.show)
-        if (std::find(requested.begin(), requested.end(), s) == requested.end())
+        if (!named(requested, s.c_str()))
             throw RenderError("--show takes " + listed(requested) + " (got '" + s + "')");
-    auto named = [](const std::vector<std::string>& list, const char* name) { return std::find(list.begin(), list.end(), name) != list.end(); };
+}
+
+} // namespace
+
+std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
+                                                vtkPolyData* base, const LayerChoice& choice) {
+    check_names(choice);
     std::vector<std::unique_ptr<Layer>> layers;
     for (const LayerKind& k : kinds()) {
         if (k.on_request ? !named(choice.show, k.name) : named(choice.hide, k.name)) continue;
@@ -103,8 +112,8 @@ std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vt
 
 std::vector<std::string> layer_choice_notes(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
                                             vtkPolyData* base, const LayerChoice& choice) {
+    check_names(choice);
     std::vector<std::string> notes;
-    auto named = [](const std::vector<std::string>& list, const char* name) { return std::find(list.begin(), list.end(), name) != list.end(); };
     for (const LayerKind& k : kinds()) {
         const bool hidden = !k.on_request && named(choice.hide, k.name), shown = k.on_request && named(choice.show, k.name);
         if ((hidden || shown) && !k.make(summary, first_step, base))

@@ -27,7 +27,7 @@ std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vt
 
 // What --hide and --show could not do in this series, each saying why: a layer hidden that the
 // series would not draw anyway (no hinges in an elastic scene), or one asked for that it has
-// nothing for (no reactions). Names are checked by make_layers.
+// nothing for (no reactions). Throws RenderError for a name that is not a layer's, as make_layers.
 std::vector<std::string> layer_choice_notes(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
                                             vtkPolyData* base, const LayerChoice& choice);
 

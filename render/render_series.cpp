@@ -107,7 +107,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     auto grid_of = [&](std::size_t index) {
         return index == 0 ? first : magnified(read_step(series.steps[index].file), summary.magnify);
     };
-    make_layers(summary, first, base, layers); // refuses a layer name that is not one (before anything is cleared)
+    // Refuses a layer name that is not one, before anything is cleared.
     for (std::string& note : layer_choice_notes(summary, first, base, layers)) report.notes.push_back(std::move(note));
     if (!options.steps.empty() && options.every != 1)
         report.notes.push_back("--every " + std::to_string(options.every) + " changes nothing: --steps names the steps to draw");

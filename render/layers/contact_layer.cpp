@@ -1,5 +1,4 @@
 #include "arrow_scale.hpp"
-#include "figure_text.hpp"
 #include "flat_marks.hpp"
 #include "result_schema.hpp"
 #include "layers/layers.hpp"
@@ -59,7 +58,7 @@ public:
             if (magnitude > reference_ && magnitude > valued.force) valued = {magnitude, fx, fy, {tail[0], tail[1]}};
         }
         // One value, the largest: a row of pressed nodes would write a row of numbers.
-        if (valued.force > 0) labels_.add(valued.tail, valued.fx, valued.fy, number(valued.force) + (unit_.empty() ? "" : " " + unit_));
+        if (valued.force > 0) labels_.add(valued.tail, valued.fx, valued.fy, force_text(valued.force, unit_));
     }
 
     std::vector<LegendEntry> legend() const override {
@@ -68,7 +67,7 @@ public:
 
     std::string note() const override {
         if (reference_ >= largest_) return longest_arrow_note(largest_, unit_);
-        return "longest: " + number(reference_) + (unit_.empty() ? "" : " " + unit_) +
+        return "longest: " + force_text(reference_, unit_) +
                "\n(largest while the load is in view;\nlonger ones end there, the largest valued)";
     }
 

@@ -1,5 +1,4 @@
 #include "arrow_scale.hpp"
-#include "figure_text.hpp"
 #include "flat_marks.hpp"
 #include "result_schema.hpp"
 #include "layers/layers.hpp"
@@ -83,10 +82,10 @@ public:
 
     std::string note() const override {
         std::string text;
-        if (stats_.max_force > 0) text = "longest: " + number(scale_.reference) + unit(summary_.force_unit);
+        if (stats_.max_force > 0) text = "longest: " + force_text(scale_.reference, summary_.force_unit);
         if (stats_.max_moment > 0)
-            text += (text.empty() ? "" : "\n") + std::string("moment ") + number(stats_.max_moment) +
-                    unit(array_unit(summary_, result::name::moment_i));
+            text += (text.empty() ? "" : "\n") + std::string("moment ") +
+                    force_text(stats_.max_moment, array_unit(summary_, result::name::moment_i));
         // How arrows off the scale are drawn (ArrowScale), said once under the entry.
         const bool spikes = scale_.reference < stats_.max_force;
         if (stats_.max_force <= 0) return text + "\n(largest in the run)";
@@ -95,8 +94,6 @@ public:
     }
 
 private:
-    static std::string unit(const std::string& u) { return u.empty() ? std::string() : " " + u; }
-
     // The tip touches the ribbon's edge; an arrow off the scale says its value.
     void force_arrow(const double p[3], double fx, double fy) {
         const double f = std::hypot(fx, fy);
@@ -104,7 +101,7 @@ private:
         const double tip[2] = {p[0] - 0.5 * view_.ribbon_width * fx / f, p[1] - 0.5 * view_.ribbon_width * fy / f};
         const double tail[2] = {tip[0] - length * fx / f, tip[1] - length * fy / f};
         arrows_.arrow(tail, tip, view_.pixels(3), kind_.colour);
-        if (!scale_.to_scale(f)) labels_.add(tail, fx, fy, number(f) + unit(summary_.force_unit));
+        if (!scale_.to_scale(f)) labels_.add(tail, fx, fy, force_text(f, summary_.force_unit));
     }
 
     // A three-quarter circle round the node, its head showing the sense of the moment.
