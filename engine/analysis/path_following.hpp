@@ -5,9 +5,12 @@
 // Increments adapt to the iteration count; a failed increment is reverted and halved.
 #pragma once
 
+#include "analysis/path_constraint.hpp"
 #include "analysis/path_extrapolation.hpp"
+#include "analysis/stage_sequence.hpp"
 #include "analysis/step_controller.hpp"
 #include "analysis/step_result.hpp"
+#include "analysis/stop_diagnosis.hpp"
 #include "analysis/structural_system.hpp"
 #include "model/model.hpp"
 #include "solver/linear_solver.hpp"
@@ -16,6 +19,8 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,12 +72,28 @@ public:
 
 private:
     RunSummary run_steps(const std::vector<StepObserver>& observers, const RunControl& control, RunSummary& summary);
-    // extrapolate: start from the path's quadratic extrapolation when there is one.
-    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate);
-    // One increment under the given scheme instead of the stage's (an arc-length step's landing).
-    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, Scheme scheme);
-    // Where the current state lies along the path: the controlled displacement, the load
-    // factor or the arc length, by the scheme.
+    // One step of size h from the state saved: the extrapolated start, else the tangent's, and
+    // a step past the target taken again to land on it. Discarded attempts' iterations are
+    // counted in the summary; the returned attempt's are the caller's to count.
+    NewtonResult attempt_step(double h, const RunControl& control, const Eigen::VectorXd& u_saved,
+                              double lambda_saved, RunSummary& summary);
+    // One increment under the given constraint (the stage's, or the one that lands on its
+    // target); extrapolate: start from the path's quadratic extrapolation when there is one.
+    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, const PathConstraint& constraint);
+    // After a failed attempt of size step_h: back to the saved state, h the increment to try
+    // next; the stop, where no smaller increment is left to try or none can help.
+    std::optional<StopReason> after_failure(const NewtonResult& outcome, double step_h, const Eigen::VectorXd& u_saved,
+                                            double lambda_saved, double& h);
+    // The converged attempt becomes the next step.
+    void commit_step(const NewtonResult& outcome, RunSummary& summary);
+    // Under load control of forces, a step cut to a thousandth of the stage's increment whose
+    // tangent shows no stiffness in the load direction: the limit load.
+    std::optional<StopReason> limit_on_plateau(double step_h);
+    // The next stage drives its pattern under its constraint; returns its first increment.
+    double begin_next_stage();
+    // Where the current state lies: its load factor, controlled displacement and arc length,
+    // and its place along the path in the current constraint's parameter.
+    PathPosition position() const;
     double path_parameter() const;
     // Whether the next increment starts from the path's extrapolation.
     bool extrapolating() const;
@@ -88,42 +109,20 @@ private:
     RoundOffFloor round_off_floor() const;
     // Empty, or what passed through what in the last converged step.
     std::string check_penetration() const;
-    // Where the last evaluation left a base that the last converged step touched, and that
-    // frees a rigid motion: the contact lost and the motion, in words; else empty.
-    std::string contact_mechanism() const;
-    // The same where the failed iterate does not show it, a small step along the load's
-    // response from the converged state (the system is left there: revert after).
-    std::string probe_contact_mechanism(const Eigen::VectorXd& u_converged, double lambda_converged);
-    void remember_contact(); // after a commit
-    // Where the unloaded tangent is singular although the supports hold every rigid motion: the
-    // mechanism the member-end releases leave, in words, if holding them makes it stable; else empty.
-    std::string release_mechanism() const;
     // f·K⁻¹f of the driven load direction at the last evaluation (0 where K is singular): the
     // reference of Bergan's current stiffness parameter in tangent_shows_limit().
     double load_flexibility();
     std::vector<bool> committed_contact_; // per foundation spring: touching at the last converged step
-    double control_value(const Eigen::VectorXd& u) const; // of the current stage's controlled DOF
     // A stage that drives another pattern: the one driven so far keeps its factor, λ takes up
     // the new pattern's, and loads, pressures, prescribed displacements and bases follow.
     void drive_pattern(int pattern);
     // The converged state as a step's result, in storage kept from step to step (the
     // observers copy what they keep). with_sections: RunControl::report_sections of the run.
     const StepResult& make_result(int step, int iterations, Acceptance rule, bool with_sections);
-    // Whether the current stage's target is reached (within round-off of its increment).
-    bool target_reached() const;
-    // How far the current state lies past the stage's target, toward it positive (in load
-    // factor or controlled displacement); −∞ without a target.
-    double past_target() const;
-    // Round-off of the increment that led to the target: nearer than this counts as on it.
-    double target_slack() const { return 1e-9 * std::abs(analysis_.initial_increment); }
-    // Makes stages[k] of the model the current stage; returns its first increment, signed
-    // toward its target.
-    double begin_stage(std::size_t k);
 
     Model model_;
-    AnalysisSpec analysis_;   // the current stage: [analysis], then each [[stage]] over it
-    std::size_t stage_ = 0;   // 0: [analysis]; k: the model's stages[k − 1]
-    double direction_ = 1.0;  // the sign of travel toward the current stage's target
+    StageSequence stages_;
+    std::unique_ptr<PathConstraint> constraint_; // the current stage's scheme
     StructuralSystem system_;
     LinearSolver solver_;
     Eigen::VectorXd u_;     // full displacement vector
