@@ -1,5 +1,7 @@
 #include "vtu_series_writer.hpp"
 
+#include "arrays/base_lines.hpp"
+
 #include "atomic_file.hpp"
 #include "result_schema.hpp"
 
@@ -85,43 +87,7 @@ void VtuSeriesWriter::write_step(const StepResult& r) {
 void VtuSeriesWriter::write_base() {
     const Model& m = *model_;
     if (m.springs.empty()) return;
-    XmlDataset poly;
-    XmlArray kind = integer_array(result::name::base_kind, 0);
-    auto add_point = [&poly](double x, double y) {
-        poly.points.insert(poly.points.end(), {x, y, 0.0});
-        return static_cast<std::int64_t>(poly.point_count() - 1);
-    };
-    for (const FoundationSpring& s : m.springs) {
-        if (s.unilateral) continue; // a base line holds these (drawn below); a tensionless bed shows by its contact forces
-        poly.vertices.push_back(add_point(m.nodes[s.node].x, m.nodes[s.node].y));
-        integer(kind).push_back(static_cast<int>(result::BaseKind::spring_anchor));
-    }
-    // Each rigid line, long enough for a structure that spreads over it: twice the structure's
-    // extent on either side of its centre. A platen's line is drawn where it is at λ = 0 and
-    // moves by λ·motion (cell array "motion"; λ is each step's load_factor, or with several load
-    // patterns the factor of the line's "pattern" in the step's pattern_factors).
-    XmlArray motion = real_array(result::name::base_motion, poly.vertices.size(), 3);
-    XmlArray pattern = integer_array(result::name::base_pattern, poly.vertices.size());
-    const std::vector<int> patterns = result::active_patterns(m);
-    for (const BaseLine& base : m.bases) {
-        double lo = 1e300, hi = -1e300;
-        const double tx = -base.normal[1], ty = base.normal[0];
-        for (const Node& nd : m.nodes) {
-            const double t = (nd.x - base.point[0]) * tx + (nd.y - base.point[1]) * ty;
-            lo = std::min(lo, t);
-            hi = std::max(hi, t);
-        }
-        const double mid = 0.5 * (lo + hi), half = std::max(hi - lo, 1e-12);
-        const std::int64_t a = add_point(base.point[0] + (mid - 2 * half) * tx, base.point[1] + (mid - 2 * half) * ty);
-        const std::int64_t b = add_point(base.point[0] + (mid + 2 * half) * tx, base.point[1] + (mid + 2 * half) * ty);
-        poly.lines.push_back({a, b});
-        integer(kind).push_back(static_cast<int>(result::BaseKind::rigid_line));
-        for (double v : {base.motion[0], base.motion[1], 0.0}) real(motion).push_back(v);
-        integer(pattern).push_back(static_cast<int>(std::find(patterns.begin(), patterns.end(), base.pattern) - patterns.begin()));
-    }
-    poly.cell_data.push_back(std::move(kind));
-    if (dataset_.has(result::name::base_motion)) poly.cell_data.push_back(std::move(motion));
-    if (dataset_.has(result::name::base_pattern)) poly.cell_data.push_back(std::move(pattern));
+    const XmlDataset poly = base_lines_dataset(m, dataset_.arrays());
     write_file_atomically((fs::path(directory_) / "base.vtp").string(), poly_data_xml(poly, options_.compression));
     has_base_file_ = true;
 }

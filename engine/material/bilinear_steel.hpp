@@ -16,10 +16,7 @@ public:
     BilinearSteel(const SteelSpec& spec, double residual_stress);
 
     std::unique_ptr<UniaxialMaterial> clone() const override { return std::make_unique<BilinearSteel>(*this); }
-    StressTangent set_trial_strain(double strain) override { return trial(strain); }
-    // The same, not virtual: a fibre section whose fibres are all of this law calls it directly
-    // (inlined into the section's loop over fibres).
-    inline StressTangent trial(double strain);
+    StressTangent set_trial_strain(double strain) override;
     StressTangent set_trial_strain_on_branch(double strain) override;
     // An elastic stress within ±fy, a plastic strain that grows in the direction of yielding.
     bool branch_consistent() const override;
@@ -51,38 +48,5 @@ private:
     State trial_;
     State committed_;
 };
-
-inline StressTangent BilinearSteel::trial(double strain) {
-    State& s = trial_;
-    s = committed_;
-    s.strain = strain;
-    if (s.failed) {
-        s.stress = 0.0;
-        s.tangent = 0.0;
-        return {s.stress, s.tangent};
-    }
-    // The residual stress acts as an initial elastic strain of the fibre.
-    const double total = strain + eps_residual_;
-    if (eu_ > 0.0 && std::abs(total) > eu_) {
-        s.failed = true;
-        s.stress = 0.0;
-        s.tangent = 0.0;
-        return {s.stress, s.tangent};
-    }
-    const double elastic_stress = E_ * (total - s.plastic_strain);
-    if (std::abs(elastic_stress) <= fy_) {
-        s.stress = elastic_stress;
-        s.tangent = E_;
-        s.branch = 0;
-    } else {
-        // Return mapping of perfect plasticity: the excess strain becomes plastic.
-        const double sign = elastic_stress > 0.0 ? 1.0 : -1.0;
-        s.stress = sign * fy_;
-        s.plastic_strain = total - s.stress / E_;
-        s.tangent = 0.0;
-        s.branch = static_cast<int>(sign);
-    }
-    return {s.stress, s.tangent};
-}
 
 } // namespace plastica

@@ -1,6 +1,5 @@
 #include "section/fibre_section.hpp"
 
-#include "material/bilinear_steel.hpp"
 #include "material/material_registry.hpp"
 
 #include <algorithm>
@@ -53,8 +52,6 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
         ny_tension_ += fibres_.back().limit_tension * f.area;
         ny_compression_ += fibres_.back().limit_compression * f.area;
     }
-    all_bilinear_ = std::all_of(fibres_.begin(), fibres_.end(),
-                                [](FibrePoint& f) { return dynamic_cast<BilinearSteel*>(&*f.material) != nullptr; });
     build_capacity_curves();
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
@@ -82,9 +79,8 @@ SectionResponse FibreSection::set_trial(double eps0, double curvature) {
     double N = 0.0, M = 0.0, k11 = 0.0, k12 = 0.0, k22 = 0.0;
     for (FibrePoint& f : fibres_) {
         const double strain = eps0 - f.y * curvature;
-        const StressTangent st = on_branches    ? f.material->set_trial_strain_on_branch(strain)
-                                 : all_bilinear_ ? static_cast<BilinearSteel&>(*f.material).trial(strain)
-                                                 : f.material->set_trial_strain(strain);
+        const StressTangent st =
+            on_branches ? f.material->set_trial_strain_on_branch(strain) : f.material->set_trial_strain(strain);
         const double s = st.stress * f.area;
         const double t = st.tangent * f.area;
         N += s;

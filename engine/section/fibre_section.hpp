@@ -93,7 +93,6 @@ private:
     };
     SectionSpec spec_; // kept to rebuild an unstressed copy
     std::vector<FibrePoint> fibres_;
-    bool all_bilinear_ = false; // every fibre's law is BilinearSteel: called directly
     // M_p(N) as a polyline per bending sign (index 0 positive), ordered by N; it is exact
     // for fibres and runs at every hinge evaluation.
     struct CapacityPoint {
