@@ -2,61 +2,29 @@
 #include "layers/layers.hpp"
 #include "render_error.hpp"
 
-#include "result_schema.hpp"
-
-#include <vtkCellData.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkUnstructuredGrid.h>
-
 #include <algorithm>
 #include <functional>
 
 namespace plastica::render {
 
+// The kinds, one in each file of render/layers/.
+LayerKind initial_shape_kind();
+LayerKind base_kind();
+LayerKind hinge_kind();
+LayerKind release_kind();
+LayerKind contact_kind();
+LayerKind surface_contact_kind();
+LayerKind support_kind();
+LayerKind load_kind();
+LayerKind reaction_kind();
+
 namespace {
 
-struct LayerKind {
-    const char* name; // for --hide and --show
-    std::function<std::unique_ptr<Layer>(const SeriesSummary&, vtkUnstructuredGrid*, vtkPolyData*)> make; // null: not needed
-    bool on_request = false; // drawn only when --show names it
-};
-
-// Drawing order, which is also the legend's order.
+// Drawing order, which is also the legend's order: one line a layer, its kind in its file.
 const std::vector<LayerKind>& kinds() {
     static const std::vector<LayerKind> all = {
-        {"initial", [](const SeriesSummary&, vtkUnstructuredGrid* first, vtkPolyData*) { return initial_shape_layer(first); }},
-        {"base",
-         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData* base) -> std::unique_ptr<Layer> {
-             if (!base || (base->GetNumberOfLines() == 0 && base->GetNumberOfVerts() == 0)) return nullptr;
-             return base_layer(s, base);
-         }},
-        {"hinges",
-         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return s.inelastic ? hinge_layer(s) : nullptr;
-         }},
-        {"releases",
-         [](const SeriesSummary&, vtkUnstructuredGrid* first, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return first && first->GetCellData()->GetArray(result::name::released) ? release_layer() : nullptr;
-         }},
-        {"contact",
-         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return s.any_contact ? contact_layer(s) : nullptr;
-         }},
-        {"surface_contact",
-         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return s.max_surface_contact_force > 0 ? surface_contact_layer(s) : nullptr;
-         }},
-        {"supports", [](const SeriesSummary& s, vtkUnstructuredGrid* first, vtkPolyData*) { return support_layer(s, first); }},
-        {"loads",
-         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return s.loads.max_force > 0 || s.loads.max_moment > 0 ? load_layer(s) : nullptr;
-         }},
-        {"reactions",
-         [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
-             return s.reactions.max_force > 0 || s.reactions.max_moment > 0 ? reaction_layer(s) : nullptr;
-         },
-         true},
+        initial_shape_kind(), base_kind(), hinge_kind(),  release_kind(),  contact_kind(),
+        surface_contact_kind(), support_kind(), load_kind(), reaction_kind(),
     };
     return all;
 }

@@ -1,21 +1,22 @@
-// The discrete structure: elements and foundation springs over the model's DOFs. It evaluates
-// internal forces and the tangent on the free DOFs for a given full displacement vector, and
-// the coupling ∂f/∂λ that prescribed displacements (K_fp·ū) and moving platens exert on the
-// free DOFs.
+// The discrete structure: its components (component.hpp: the members, the foundation springs
+// and bases, the contact between surfaces) over the model's DOFs. It evaluates internal forces
+// and the tangent on the free DOFs for a given full displacement vector, and the coupling ∂f/∂λ
+// that prescribed displacements (K_fp·ū) and moving platens exert on the free DOFs.
 #pragma once
 
-#include "analysis/hinge_allocation.hpp"
+#include "analysis/component.hpp"
+#include "analysis/foundation_component.hpp"
+#include "analysis/member_set.hpp"
 #include "analysis/step_result.hpp"
-#include "contact/foundation.hpp"
-#include "contact/self_contact.hpp"
-#include "element/corotational_beam.hpp"
+#include "analysis/surface_contact_component.hpp"
 #include "load/follower_pressure.hpp"
 #include "model/model.hpp"
 #include "solver/block_assembler.hpp"
 
 #include <Eigen/Dense>
 #include <array>
-#include <map>
+#include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ public:
     // The model's nodal loads, pattern by pattern, are the reference loads that do not follow
     // the structure; [analysis]'s pattern is driven first.
     explicit StructuralSystem(const Model& model);
+    // Its components keep references into it.
+    StructuralSystem(const StructuralSystem&) = delete;
+    StructuralSystem& operator=(const StructuralSystem&) = delete;
     // A new stage: the driven pattern's loads, pressures and moving bases scale with λ; the
     // others keep their factors (PatternFactors).
     void set_pattern_factors(const PatternFactors& factors);
@@ -65,12 +69,12 @@ public:
     Eigen::VectorXd axial_forces() const;
     // Whether that tangent is finite; if not, non_finite_where() names the element.
     bool tangent_finite() const;
-    const std::string& non_finite_where() const { return non_finite_where_; }
-    const Foundation& foundation() const { return foundation_; }
-    const SelfContact& self_contact() const { return self_contact_; }
+    const std::string& non_finite_where() const { return members_->non_finite_where(); }
+    const Foundation& foundation() const { return foundation_->foundation(); }
+    const SelfContact& self_contact() const { return surfaces_->self_contact(); }
     void set_contact_undecided_force(double force) {
-        foundation_.set_undecided_force(force);
-        undecided_force_ = force;
+        foundation_->foundation().set_undecided_force(force);
+        surfaces_->set_undecided_force(force);
     }
     // Whether the bases' and the surfaces' contact sets of the last evaluation are those its
     // geometry gives, unchanged from the evaluation before.
@@ -78,17 +82,17 @@ public:
     // No load, no prescribed displacement: moving bases drive the structure.
     bool driven_by_platens() const { return driven_by_platens_; }
     // The forces the moving bases exert at the last evaluation (free DOFs).
-    Eigen::VectorXd platen_force() const;
-    bool on_moving_base(std::size_t spring) const { return on_moving_base_[spring]; }
+    Eigen::VectorXd platen_force() const { return foundation_->platen_force(free_count_); }
+    bool on_moving_base(std::size_t spring) const { return foundation_->on_moving_base(spring); }
     // Whether every element's hinge states (frozen or not) agree with the evaluated state.
-    bool hinge_states_consistent() const;
+    bool hinge_states_consistent() const { return members_->hinge_states_consistent(); }
     // No member has hinges or fibre sections: every law is smooth.
-    bool all_members_elastic() const;
+    bool all_members_elastic() const { return members_->all_elastic(); }
     // The reference load moves with the structure (follower pressure); else it is fixed.
     bool load_follows_deformation() const { return !pressure_.empty(); }
     // The largest advance of a section into its yielding range over the trial step, among
     // laws that integrate their stiffness explicitly (BasicLaw::trial_yield_advance).
-    double trial_yield_advance() const;
+    double trial_yield_advance() const { return members_->trial_yield_advance(); }
 
     // The residual, relative to the load at λ, that the rounding of the displacements u alone
     // leaves at the last evaluation, and the part of it the foundation springs' penalties cause.
@@ -100,11 +104,11 @@ public:
     void gather(const Eigen::VectorXd& full, Eigen::VectorXd& free) const; // no allocation once sized
     void scatter(const Eigen::VectorXd& free, Eigen::VectorXd& full) const;
 
-    // Commits every element and spring, then gives each joint's hinge to its weaker end at the
-    // committed axial forces (analysis/hinge_allocation.hpp).
+    // Commits every component: the members then give each joint's hinge to its weaker end at
+    // the committed axial forces (analysis/hinge_allocation.hpp).
     void commit();
     // The next increment turns the load back: its predictor unloads elastically.
-    void predict_unloading();
+    void predict_unloading() { members_->predict_unloading(); }
     void revert();
 
     // Fills the element, spring and reaction parts of a step result (committed state), the
@@ -112,55 +116,42 @@ public:
     void report(const Eigen::VectorXd& u, const Eigen::VectorXd& external, StepResult& out,
                 bool with_sections = true) const;
 
-    const std::vector<CorotationalBeam>& elements() const { return elements_; }
+    const std::vector<CorotationalBeam>& elements() const { return members_->elements(); }
 
 private:
-    std::vector<ElementSpec> element_specs_;
-    std::vector<Node> nodes_;
-    std::vector<CorotationalBeam> elements_;
-    std::vector<bool> distributed_; // per element: fibre sections along it (else hinges or elastic)
-    std::vector<double> elastic_ea_; // per element: EA if neither hinges nor fibre sections, else 0
-    std::vector<std::vector<int>> held_dofs_; // per element: its local DOFs that are supported or prescribed
-    Foundation foundation_;
-    SelfContact self_contact_;
-    double undecided_force_ = 0.0;
-    // The assembler's blocks: elements, springs, then each pair of surfaces that has touched
-    // (node, segment ends), found by its nodes. A new pair widens the pattern once.
-    std::vector<std::vector<int>> blocks_;
-    std::size_t member_blocks_ = 0; // elements and springs: the blocks that are always there
-    std::map<std::array<int, 3>, std::size_t> surface_block_;
-    bool add_surface_blocks(); // whether a pair was new (the assembler is then built again)
-    // At a commit: only the pairs that touch now keep their blocks. A pair that touched only in
-    // a wandering iterate would otherwise keep coupling two far nodes of a ring, and its
-    // factorisation would stay as wide as that chord made it.
-    void keep_touching_surface_blocks();
+    int free_count_ = 0;
+    std::vector<int> equation_;
+    std::vector<int> dof_of_equation_; // the inverse of equation_ on the free DOFs
     FollowerPressure pressure_;
-    JointHinges joint_hinges_;
+    // Every component, in the order they are evaluated and assembled (added in the
+    // constructor, one line each), and the first of each one's blocks in the assembler.
+    std::vector<std::unique_ptr<Component>> components_;
+    std::vector<std::size_t> first_block_;
+    template <class Kind, class... Arguments>
+    Kind* add(Arguments&&... arguments) {
+        components_.push_back(std::make_unique<Kind>(std::forward<Arguments>(arguments)...));
+        return static_cast<Kind*>(components_.back().get());
+    }
+    // Those the path following asks more of than the interface.
+    MemberSet* members_ = nullptr;
+    FoundationComponent* foundation_ = nullptr;
+    SurfaceContactComponent* surfaces_ = nullptr;
+    void build_assembler();
+
     std::vector<Eigen::VectorXd> pattern_loads_; // per pattern, the nodal loads
     std::vector<bool> platens_only_;            // per pattern: driven by moving bases alone
     Eigen::VectorXd fixed_load_;                // the driven pattern's
     Eigen::VectorXd held_fixed_load_;           // the held patterns' at their factors
     Eigen::VectorXd load_;
     Eigen::VectorXd held_load_;
-    int free_count_ = 0;
-    std::vector<int> equation_;
-    std::vector<int> dof_of_equation_; // the inverse of equation_ on the free DOFs
-    // Assembled on demand from the elements' and springs' trial states (tangent()).
+    // Assembled on demand from the components' trial states (tangent()).
     void assemble_tangent() const;
-    void element_stiffness(std::size_t e, Matrix6& k) const; // the member's tangent and its pressure's
-    bool element_tangent(std::size_t e, Matrix6& k) const; // the same; false (and names it) if not finite
-    void name_non_finite(std::size_t e) const;
 
     mutable BlockAssembler assembler_;
     mutable bool tangent_assembled_ = false;
     mutable bool tangent_finite_ = true;
-    Eigen::VectorXd tangent_axial_forces_;
-    bool tangent_takes_axial_forces_ = false; // for the last evaluation's tangent
-    double evaluated_load_factor_ = 0.0; // of the last evaluation: follower pressure's stiffness
     Eigen::VectorXd internal_;
     Eigen::VectorXd coupling_;
-    mutable std::string non_finite_where_;
-    std::vector<bool> on_moving_base_; // per foundation spring
     bool driven_by_platens_ = false;
 };
 

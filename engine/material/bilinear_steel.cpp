@@ -37,37 +37,4 @@ bool BilinearSteel::branch_consistent() const {
     return trial_.branch * (trial_.plastic_strain - committed_.plastic_strain) >= -slack;
 }
 
-StressTangent BilinearSteel::set_trial_strain(double strain) {
-    State& s = trial_;
-    s = committed_;
-    s.strain = strain;
-    if (s.failed) {
-        s.stress = 0.0;
-        s.tangent = 0.0;
-        return {s.stress, s.tangent};
-    }
-    // The residual stress acts as an initial elastic strain of the fibre.
-    const double total = strain + eps_residual_;
-    if (eu_ > 0.0 && std::abs(total) > eu_) {
-        s.failed = true;
-        s.stress = 0.0;
-        s.tangent = 0.0;
-        return {s.stress, s.tangent};
-    }
-    const double elastic_stress = E_ * (total - s.plastic_strain);
-    if (std::abs(elastic_stress) <= fy_) {
-        s.stress = elastic_stress;
-        s.tangent = E_;
-        s.branch = 0;
-    } else {
-        // Return mapping of perfect plasticity: the excess strain becomes plastic.
-        const double sign = elastic_stress > 0.0 ? 1.0 : -1.0;
-        s.stress = sign * fy_;
-        s.plastic_strain = total - s.stress / E_;
-        s.tangent = 0.0;
-        s.branch = static_cast<int>(sign);
-    }
-    return {s.stress, s.tangent};
-}
-
 } // namespace plastica

@@ -10,7 +10,7 @@
 
 namespace plastica {
 
-class KinematicHardeningSteel final : public UniaxialMaterial {
+class KinematicHardeningSteel final : public UniaxialLaw<KinematicHardeningSteel> {
 public:
     KinematicHardeningSteel(const SteelSpec& spec, double residual_stress);
 

@@ -1,8 +1,11 @@
 // The law of one fibre: a trial state set from a strain, committed at equilibrium and reverted
 // after a failed increment. The fibre section sees materials only through this interface; a
-// new law is one file pair and one line in material/material_registry.cpp.
+// new law is one file pair and one line in material/material_registry.cpp. A law derives from
+// UniaxialLaw<itself>, which gives it the section's loop over its fibres with its own update
+// called directly (one virtual call per section, not per fibre).
 #pragma once
 
+#include <cstddef>
 #include <memory>
 
 namespace plastica {
@@ -11,6 +14,15 @@ namespace plastica {
 struct StressTangent {
     double stress = 0.0;
     double tangent = 0.0;
+};
+
+struct SectionFibre;
+
+// What a section's fibres sum to at a trial strain: N = Σσ·A, M = −Σσ·A·y, and the tangent
+// ∂(N, M)/∂(ε0, κ) = [k11 k12; k12 k22].
+struct FibreSums {
+    double N = 0.0, M = 0.0;
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0;
 };
 
 class UniaxialMaterial {
@@ -41,6 +53,12 @@ public:
 
     virtual void commit() = 0;
     virtual void revert() = 0;
+
+    // Sets the trial strain ε0 − y·κ of the section's fibres [fibres, fibres + count), whose
+    // laws are all of this one's kind (a section makes its fibres from one law), each kept on
+    // its branch if asked; returns their sums.
+    virtual FibreSums set_trial_fibres(SectionFibre* fibres, std::size_t count, double eps0, double curvature,
+                                       bool on_branches) = 0;
 };
 
 // A material held by value: copies clone the law with its history.
@@ -62,6 +80,43 @@ public:
 
 private:
     std::unique_ptr<UniaxialMaterial> m_;
+};
+
+// A fibre of a section: its area, distance y from the reference axis (strain ε0 − y·κ), its
+// law's limit stresses (magnitudes) and residual stress, and the law with its history.
+struct SectionFibre {
+    double area;
+    double y;
+    double limit_tension;
+    double limit_compression;
+    double residual_stress;
+    MaterialHolder material;
+};
+
+// The base of each law: the section's loop over fibres, with the law's own update called
+// directly (Law is final) and inlined where the law defines it.
+template <class Law>
+class UniaxialLaw : public UniaxialMaterial {
+public:
+    FibreSums set_trial_fibres(SectionFibre* fibres, std::size_t count, double eps0, double curvature,
+                               bool on_branches) override {
+        // Sums in locals: the compiler keeps them in registers across the fibres' laws.
+        double N = 0.0, M = 0.0, k11 = 0.0, k12 = 0.0, k22 = 0.0;
+        for (std::size_t i = 0; i < count; ++i) {
+            SectionFibre& f = fibres[i];
+            Law& law = static_cast<Law&>(*f.material); // every fibre of the section is of this law
+            const double strain = eps0 - f.y * curvature;
+            const StressTangent st = on_branches ? law.set_trial_strain_on_branch(strain) : law.set_trial_strain(strain);
+            const double s = st.stress * f.area;
+            const double t = st.tangent * f.area;
+            N += s;
+            M -= s * f.y;
+            k11 += t;
+            k12 -= t * f.y;
+            k22 += t * f.y * f.y;
+        }
+        return {N, M, k11, k12, k22};
+    }
 };
 
 } // namespace plastica

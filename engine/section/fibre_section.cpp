@@ -68,31 +68,19 @@ SectionResponse FibreSection::set_trial_deformation_on_branches(double eps0, dou
 
 bool FibreSection::branches_consistent() const {
     return std::all_of(fibres_.begin(), fibres_.end(),
-                       [](const FibrePoint& f) { return f.material->branch_consistent(); });
+                       [](const SectionFibre& f) { return f.material->branch_consistent(); });
 }
 
 template <bool on_branches>
 SectionResponse FibreSection::set_trial(double eps0, double curvature) {
     eps0_t_ = eps0;
     phi_t_ = curvature;
-    // Sums in locals: the compiler keeps them in registers across the fibres' laws.
-    double N = 0.0, M = 0.0, k11 = 0.0, k12 = 0.0, k22 = 0.0;
-    for (FibrePoint& f : fibres_) {
-        const double strain = eps0 - f.y * curvature;
-        const StressTangent st =
-            on_branches ? f.material->set_trial_strain_on_branch(strain) : f.material->set_trial_strain(strain);
-        const double s = st.stress * f.area;
-        const double t = st.tangent * f.area;
-        N += s;
-        M -= s * f.y;
-        k11 += t;
-        k12 -= t * f.y;
-        k22 += t * f.y * f.y;
-    }
+    if (fibres_.empty()) return {};
+    const FibreSums sums = fibres_.front().material->set_trial_fibres(fibres_.data(), fibres_.size(), eps0, curvature, on_branches);
     SectionResponse r;
-    r.N = N;
-    r.M = M;
-    r.tangent << k11, k12, k12, k22;
+    r.N = sums.N;
+    r.M = sums.M;
+    r.tangent << sums.k11, sums.k12, sums.k12, sums.k22;
     return r;
 }
 
@@ -151,13 +139,13 @@ ScmResult FibreSection::solve_for_forces(double N, double M, int max_iterations)
 }
 
 void FibreSection::commit() {
-    for (FibrePoint& f : fibres_) f.material->commit();
+    for (SectionFibre& f : fibres_) f.material->commit();
     eps0_c_ = eps0_t_;
     phi_c_ = phi_t_;
 }
 
 void FibreSection::revert() {
-    for (FibrePoint& f : fibres_) f.material->revert();
+    for (SectionFibre& f : fibres_) f.material->revert();
     eps0_t_ = eps0_c_;
     phi_t_ = phi_c_;
 }
@@ -178,7 +166,7 @@ void FibreSection::build_capacity_curves() {
         for (std::size_t k = 0; k <= order.size(); ++k) {
             CapacityPoint p;
             for (std::size_t m = 0; m < order.size(); ++m) {
-                const FibrePoint& f = fibres_[order[m]];
+                const SectionFibre& f = fibres_[order[m]];
                 const double sign = m < k ? below_sign : -below_sign;
                 const double s = sign * (sign > 0.0 ? f.limit_tension : f.limit_compression);
                 p.N += s * f.area;
@@ -236,7 +224,7 @@ double FibreSection::first_yield_moment(double N) const {
     // Elastic stresses σ = N·E/EA + M·E·y/EI (with M positive compressing +y) reach fy first at
     // the fibre with the smallest margin; residual stresses are part of the initial stress.
     double best = std::numeric_limits<double>::infinity();
-    for (const FibrePoint& f : fibres_) {
+    for (const SectionFibre& f : fibres_) {
         const double E = f.material->elastic_modulus();
         const double axial = N * E / ea0_ + f.residual_stress;
         const double per_moment = -E * f.y / ei0_;
@@ -274,17 +262,17 @@ std::vector<MomentCurvaturePoint> FibreSection::moment_curvature(double N, doubl
 
 int FibreSection::failed_fibres() const {
     return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
-                                          [](const FibrePoint& f) { return f.material->failed(); }));
+                                          [](const SectionFibre& f) { return f.material->failed(); }));
 }
 
 int FibreSection::yielded_fibres() const {
     return static_cast<int>(std::count_if(fibres_.begin(), fibres_.end(),
-                                          [](const FibrePoint& f) { return f.material->yielding(); }));
+                                          [](const SectionFibre& f) { return f.material->yielding(); }));
 }
 
 double FibreSection::yielded_area_share() const {
     double yielded = 0.0, total = 0.0;
-    for (const FibrePoint& f : fibres_) {
+    for (const SectionFibre& f : fibres_) {
         total += f.area;
         if (f.material->yielding() || f.material->failed()) yielded += f.area;
     }

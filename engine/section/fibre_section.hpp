@@ -83,16 +83,8 @@ public:
 private:
     template <bool on_branches>
     SectionResponse set_trial(double eps0, double curvature);
-    struct FibrePoint {
-        double area;
-        double y;
-        double limit_tension;     // the material's limit stresses (magnitudes)
-        double limit_compression;
-        double residual_stress;
-        MaterialHolder material;
-    };
     SectionSpec spec_; // kept to rebuild an unstressed copy
-    std::vector<FibrePoint> fibres_;
+    std::vector<SectionFibre> fibres_; // all of one law (make_material of the section's steel)
     // M_p(N) as a polyline per bending sign (index 0 positive), ordered by N; it is exact
     // for fibres and runs at every hinge evaluation.
     struct CapacityPoint {

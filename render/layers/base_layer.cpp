@@ -126,4 +126,12 @@ std::unique_ptr<Layer> base_layer(const SeriesSummary& summary, vtkPolyData* bas
     return std::make_unique<BaseLayer>(summary, base);
 }
 
+// Drawn where the series has a base line or spring anchors (base.vtp).
+LayerKind base_kind() {
+    return {"base", [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData* base) -> std::unique_ptr<Layer> {
+                if (!base || (base->GetNumberOfLines() == 0 && base->GetNumberOfVerts() == 0)) return nullptr;
+                return base_layer(s, base);
+            }};
+}
+
 } // namespace plastica::render

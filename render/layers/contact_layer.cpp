@@ -84,4 +84,11 @@ private:
 
 std::unique_ptr<Layer> contact_layer(const SeriesSummary& summary) { return std::make_unique<ContactLayer>(summary); }
 
+// Drawn where something touches a base.
+LayerKind contact_kind() {
+    return {"contact", [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+                return s.any_contact ? contact_layer(s) : nullptr;
+            }};
+}
+
 } // namespace plastica::render

@@ -87,4 +87,11 @@ void along_member(const double a[3], const double b[3], int end, double t, doubl
     y = from[1] + t * (to[1] - from[1]);
 }
 
+// Drawn where members are inelastic.
+LayerKind hinge_kind() {
+    return {"hinges", [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+                return s.inelastic ? hinge_layer(s) : nullptr;
+            }};
+}
+
 } // namespace plastica::render

@@ -57,4 +57,9 @@ std::unique_ptr<Layer> initial_shape_layer(vtkUnstructuredGrid* first_step) {
     return std::make_unique<InitialShapeLayer>(first_step);
 }
 
+// The undeformed members, faint behind the deformed ones: drawn always.
+LayerKind initial_shape_kind() {
+    return {"initial", [](const SeriesSummary&, vtkUnstructuredGrid* first, vtkPolyData*) { return initial_shape_layer(first); }};
+}
+
 } // namespace plastica::render

@@ -144,4 +144,20 @@ std::unique_ptr<Layer> reaction_layer(const SeriesSummary& summary) {
     return std::make_unique<LoadLayer>(summary, summary.reactions, summary.reactions.max_force, ArrowKind{result::name::reaction, result::name::reaction_moment, colour::reaction, "support reaction", "support moment"});
 }
 
+// Drawn where the series has loads.
+LayerKind load_kind() {
+    return {"loads", [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+                return s.loads.max_force > 0 || s.loads.max_moment > 0 ? load_layer(s) : nullptr;
+            }};
+}
+
+// Drawn when --show reactions asks and the series has reactions.
+LayerKind reaction_kind() {
+    return {"reactions",
+            [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+                return s.reactions.max_force > 0 || s.reactions.max_moment > 0 ? reaction_layer(s) : nullptr;
+            },
+            true};
+}
+
 } // namespace plastica::render

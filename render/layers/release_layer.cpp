@@ -61,4 +61,11 @@ private:
 
 std::unique_ptr<Layer> release_layer() { return std::make_unique<ReleaseLayer>(); }
 
+// Drawn where member ends are released.
+LayerKind release_kind() {
+    return {"releases", [](const SeriesSummary&, vtkUnstructuredGrid* first, vtkPolyData*) -> std::unique_ptr<Layer> {
+                return first && first->GetCellData()->GetArray(result::name::released) ? release_layer() : nullptr;
+            }};
+}
+
 } // namespace plastica::render

@@ -181,4 +181,9 @@ std::unique_ptr<Layer> support_layer(const SeriesSummary& summary, vtkUnstructur
     return layer;
 }
 
+// Drawn always (nothing where nothing is supported).
+LayerKind support_kind() {
+    return {"supports", [](const SeriesSummary& s, vtkUnstructuredGrid* first, vtkPolyData*) { return support_layer(s, first); }};
+}
+
 } // namespace plastica::render

@@ -69,4 +69,11 @@ std::unique_ptr<Layer> surface_contact_layer(const SeriesSummary& summary) {
     return std::make_unique<SurfaceContactLayer>(summary);
 }
 
+// Drawn where surfaces press on each other.
+LayerKind surface_contact_kind() {
+    return {"surface_contact", [](const SeriesSummary& s, vtkUnstructuredGrid*, vtkPolyData*) -> std::unique_ptr<Layer> {
+                return s.max_surface_contact_force > 0 ? surface_contact_layer(s) : nullptr;
+            }};
+}
+
 } // namespace plastica::render
