@@ -819,16 +819,16 @@ private:
         // Fibre branches along a member settle in about three extra iterations at any step
         // size (Newton freezes them from its third iteration): a plastic zone asks for more.
         a.desired_iterations = r.integer_or("desired_iterations", model_.has_plasticity(Plasticity::distributed) ? 8 : 5, 1, 100);
-        a.max_iterations = r.integer_or("max_iterations", 30, 1, 1000);
+        a.max_iterations = r.integer_or("max_iterations", AnalysisSpec{}.max_iterations, 1, 1000);
         if (a.max_increment > 0.0 && a.min_increment > a.max_increment)
             r.fail("min_increment", "must not exceed max_increment");
         if (a.min_increment > a.initial_increment) r.fail("min_increment", "must not exceed the first increment");
         if (r.has("max_increment") && a.max_increment < a.initial_increment)
             r.fail("max_increment", "must not be below the first increment");
-        a.max_steps = r.integer_or("max_steps", 1000, 1, 10'000'000);
+        a.max_steps = r.integer_or("max_steps", AnalysisSpec{}.max_steps, 1, 10'000'000);
         a.residual_tolerance_follows_floor = !r.has("residual_tolerance");
         a.residual_tolerance = r.positive_or("residual_tolerance", AnalysisSpec::default_residual_tolerance);
-        a.displacement_tolerance = r.positive_or("displacement_tolerance", 1e-6);
+        a.displacement_tolerance = r.positive_or("displacement_tolerance", AnalysisSpec::default_displacement_tolerance);
         a.allow_crossing = r.boolean_or("allow_crossing", false);
         if (r.has("target_load_factor") && r.has("target_displacement"))
             r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");

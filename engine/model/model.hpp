@@ -178,7 +178,8 @@ struct AnalysisSpec {
     // Not given by the scene: the tolerance then rises to the state's round-off floor where
     // that lies above it (a fine mesh, a stiff penalty), instead of stopping the run.
     bool residual_tolerance_follows_floor = false;
-    double displacement_tolerance = 1e-8; // ‖δu‖ relative to ‖Δu‖ of the step
+    static constexpr double default_displacement_tolerance = 1e-6;
+    double displacement_tolerance = default_displacement_tolerance; // ‖δu‖ relative to ‖Δu‖ of the step
     std::optional<double> target_load_factor;
     std::optional<double> target_displacement; // on the control DOF, signed as reported
     DofRef control;                            // displacement control and reporting

@@ -61,7 +61,9 @@ struct NewtonSettings {
     double residual_tolerance = 1e-6;     // ‖R‖ relative to the reference load
     // Raise the tolerance to the evaluated state's round-off floor where that lies above it.
     bool tolerance_follows_floor = false;
-    double displacement_tolerance = 1e-8; // ‖δx‖ relative to ‖Δx‖ of the increment
+    // ‖δx‖ relative to ‖Δx‖ of the increment; path following passes the scene's
+    // ([analysis] displacement_tolerance, AnalysisSpec::default_displacement_tolerance).
+    double displacement_tolerance = 1e-8;
     double reference_level = 0.0;         // |λ| the residual is measured against (0: this increment's)
     // Stagnation at round-off is accepted only within this multiple of the tolerance.
     double stagnation_factor = 10.0;
