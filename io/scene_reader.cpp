@@ -1,5 +1,6 @@
 #include "scene_reader.hpp"
 #include "member_geometry.hpp"
+#include "model_building.hpp"
 #include "section_shapes.hpp"
 #include "node_index.hpp"
 
@@ -543,19 +544,12 @@ private:
                 r.fail("", "a distributed load needs a non-zero 'wx', 'wy', 'pressure' or 'gravity'");
             const int pattern = pattern_of(r);
             bool moves = false;
-            std::map<int, std::array<double, 2>> lumped;
             for (int e : elements) {
                 const ElementSpec& el = model_.elements[e];
-                const Node &a = model_.nodes[el.node_i], &b = model_.nodes[el.node_j];
-                const double half = 0.5 * std::hypot(b.x - a.x, b.y - a.y);
-                const double m = model_.sections[el.section].mass_per_length;
-                for (int node : {el.node_i, el.node_j}) {
-                    lumped[node][0] += half * (wx + m * gravity[0]);
-                    lumped[node][1] += half * (wy + m * gravity[1]);
-                    moves = moves || !supported(node, 0) || !supported(node, 1);
-                }
+                for (int node : {el.node_i, el.node_j}) moves = moves || !supported(node, 0) || !supported(node, 1);
                 if (pressure != 0.0) model_.pressures.push_back({e, pressure, pattern});
             }
+            const std::map<int, std::array<double, 2>> lumped = lumped_line_load(model_, elements, {wx, wy}, gravity);
             if (!moves) r.fail("on", "every node of '" + on + "' is held: the load moves nothing");
             for (const auto& [node, f] : lumped)
                 if (f[0] != 0.0 || f[1] != 0.0) model_.loads.push_back({node, {f[0], f[1], 0.0}, pattern});
@@ -637,16 +631,7 @@ private:
             if (!tensionless && r.has("direction"))
                 r.fail("direction", "a direction belongs to a tensionless bed (kind = \"tensionless\")");
             if (!unilateral && kx == 0.0 && ky == 0.0 && kr == 0.0) r.fail("ky", "a foundation needs a positive kx, ky or krot");
-            std::vector<double> tributary(model_.nodes.size(), 1.0);
-            if (per_length) {
-                std::fill(tributary.begin(), tributary.end(), 0.0);
-                for (const ElementSpec& e : model_.elements) {
-                    const double L = std::hypot(model_.nodes[e.node_j].x - model_.nodes[e.node_i].x,
-                                                model_.nodes[e.node_j].y - model_.nodes[e.node_i].y);
-                    tributary[e.node_i] += L / 2.0;
-                    tributary[e.node_j] += L / 2.0;
-                }
-            }
+            const std::vector<double> tributary = per_length ? tributary_lengths(model_) : std::vector<double>(model_.nodes.size(), 1.0);
             int base_index = 0;
             if (unilateral) {
                 BaseLine base;
@@ -711,16 +696,9 @@ private:
         const std::string side = r.choice("direction", {"left_normal", "right_normal"}, "left_normal");
         const double sign = side == "left_normal" ? 1.0 : -1.0;
         for (std::size_t k = 0; k < nodes.size(); ++k) {
-            double nx = 0.0, ny = 0.0;
-            for (const ElementSpec& e : model_.elements) {
-                if (e.node_i != nodes[k] && e.node_j != nodes[k]) continue;
-                const Node &a = model_.nodes[e.node_i], &b = model_.nodes[e.node_j];
-                const double length = std::hypot(b.x - a.x, b.y - a.y);
-                nx += -(b.y - a.y) / length, ny += (b.x - a.x) / length;
-            }
-            const double length = std::hypot(nx, ny);
-            if (!(length > 1e-12)) r.fail("direction", "the members at " + describe_node(nodes[k]) + " have no one normal");
-            out[k] = {sign * nx / length, sign * ny / length};
+            const std::optional<std::array<double, 2>> normal = member_normal(model_, nodes[k]);
+            if (!normal) r.fail("direction", "the members at " + describe_node(nodes[k]) + " have no one normal");
+            out[k] = {sign * (*normal)[0], sign * (*normal)[1]};
         }
         return out;
     }
@@ -900,16 +878,7 @@ private:
         // Loads in more than one direction have no total an engineer would call the load:
         // then the load factor is reported, and labelled so.
         const bool parallel = model_.loads_parallel();
-        if (model_.driven_by_platens()) {
-            // Driven by platens alone: the load is the force they press with.
-            model_.report.measure = ReportSpec::Measure::platen;
-            model_.report.load_label = "platen force";
-        } else if (!parallel) {
-            model_.report.measure = ReportSpec::Measure::factor;
-            model_.report.load_label = "load factor";
-        } else if (model_.uniform_pressure_only()) {
-            model_.report.load_label = "pressure";
-        }
+        infer_report_measure(model_);
         if (!t) return;
         TomlTableReader r(*t, file_, "report", units());
         if (r.has("load")) {
@@ -935,7 +904,7 @@ private:
         }
         if (!model_.report.exact.empty() && model_.report.exact != "cantilever_tip_load")
             r.fail("exact", "the closed forms known are: cantilever_tip_load");
-        if (model_.report.exact == "cantilever_tip_load" && !is_cantilever_with_tip_load())
+        if (model_.report.exact == "cantilever_tip_load" && !is_cantilever_with_tip_load(model_))
             r.fail("exact", "cantilever_tip_load is the closed form of a straight elastic cantilever, clamped at one end, "
                             "with one transverse load at the other and nothing else; this scene is not one");
         if (model_.report.mirror_x) {
@@ -946,31 +915,6 @@ private:
             if (left && right) r.fail("mirror_x", "the structure lies on both sides of this line: a half model lies on one side");
         }
         r.finish({"load", "load_scale", "load_label", "displacement_label", "exact", "mirror_x", "length_unit", "force_unit"});
-    }
-
-    bool is_cantilever_with_tip_load() const {
-        const Model& m = model_;
-        if (m.inelastic() || !m.springs.empty() || !m.prescribed.empty() || !m.pressures.empty() || m.supports.size() != 1 || m.loads.size() != 1)
-            return false;
-        const Support& s = m.supports.front();
-        if (!(s.fixed[0] && s.fixed[1] && s.fixed[2])) return false;
-        // A chain of elements from the clamp: every node on the line through the clamp and the
-        // loaded node, each node in at most two elements, the clamp and the load at the ends.
-        const Node& a = m.nodes[s.node];
-        const Node& b = m.nodes[m.loads.front().node];
-        const double L = std::hypot(b.x - a.x, b.y - a.y);
-        if (!(L > 0.0)) return false;
-        const double c = (b.x - a.x) / L, sn = (b.y - a.y) / L;
-        std::vector<int> degree(m.nodes.size(), 0);
-        for (const ElementSpec& e : m.elements) ++degree[e.node_i], ++degree[e.node_j];
-        for (std::size_t k = 0; k < m.nodes.size(); ++k) {
-            const double along = (m.nodes[k].x - a.x) * c + (m.nodes[k].y - a.y) * sn;
-            const double across = -(m.nodes[k].x - a.x) * sn + (m.nodes[k].y - a.y) * c;
-            if (std::abs(across) > 1e-9 * L || along < -1e-9 * L || along > L * (1 + 1e-9) || degree[k] > 2) return false;
-        }
-        if (degree[s.node] != 1 || degree[m.loads.front().node] != 1) return false;
-        const auto& f = m.loads.front().value;
-        return f[2] == 0.0 && std::abs(f[0] * c + f[1] * sn) <= 1e-12 * std::hypot(f[0], f[1]);
     }
 
     const toml::table& root_;

@@ -1,0 +1,34 @@
+// What a scene's model is built with beside what the scene file says, as functions of the model
+// alone (no TOML, testable on their own): line loads lumped to nodes, the tributary lengths of
+// springs given per unit length, the members' normal at a node, and what the reported load
+// measures. The scene reader reads and validates, and calls these.
+#pragma once
+
+#include "model/model.hpp"
+
+#include <array>
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace plastica {
+
+// A load per unit initial length w, and self weight ρA·g where gravity is given, on the listed
+// elements, lumped half to each end of every element: the force at each node they reach.
+std::map<int, std::array<double, 2>> lumped_line_load(const Model& model, const std::vector<int>& elements,
+                                                      const std::array<double, 2>& w, const std::array<double, 2>& gravity);
+// Per node: half the length of every element that meets it (a spring per unit length there
+// stands for this much of the member).
+std::vector<double> tributary_lengths(const Model& model);
+// The unit mean of the left normals of the elements that meet the node (toward the centre of a
+// counter-clockwise arc); none where there are no elements or their normals cancel.
+std::optional<std::array<double, 2>> member_normal(const Model& model, int node);
+// What the reported load measures and is labelled, before [report] says otherwise: the force
+// moving bases press with where they alone drive the scene, the load factor where the loads are
+// not parallel (no total has a direction), "pressure" for a uniform pressure, else the total.
+void infer_report_measure(Model& model);
+// A straight elastic cantilever clamped at one end with one transverse load at the other and
+// nothing else (the closed form `exact = "cantilever_tip_load"` describes).
+bool is_cantilever_with_tip_load(const Model& model);
+
+} // namespace plastica
