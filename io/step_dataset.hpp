@@ -18,7 +18,7 @@ public:
     explicit StepDataset(const Model& model);
     // The step's dataset; time is its TimeValue (the series' time of the step).
     XmlDataset operator()(const StepResult& r, double time) const;
-    bool has(const char* array) const { return arrays_.count(array) > 0; }
+    // The schema's arrays this scene writes.
     const std::set<std::string>& arrays() const { return arrays_; }
 
 private:

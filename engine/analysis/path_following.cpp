@@ -20,9 +20,6 @@ namespace {
 // tolerance stops the run: no smaller increment lowers that floor.
 constexpr double hopeless_floor = 1e3;
 
-double dof_value(const DofRef& c, const Eigen::VectorXd& u) {
-    return c.sign * u[dofs_per_node * c.node + c.dof];
-}
 } // namespace
 
 PathFollowing::PathFollowing(const Model& model)
@@ -74,7 +71,7 @@ const StepResult& PathFollowing::make_result(int step, int iterations, Acceptanc
     r.pattern_factors.resize(factors_.held.size());
     for (std::size_t p = 0; p < factors_.held.size(); ++p) r.pattern_factors[p] = factors_.at(static_cast<int>(p), lambda_);
     r.load = r.pattern_factors[static_cast<std::size_t>(model_.reported_pattern())] * model_.load_per_factor();
-    r.control_displacement = dof_value(model_.reported_control(), u_);
+    r.control_displacement = model_.reported_control().value_in(u_);
     r.arc_length = arc_length_;
     r.iterations = iterations;
     r.accepted_by = rule;
@@ -247,16 +244,18 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     if (!publish(make_result(0, 0, Acceptance::none, control.report_sections))) return finish(0);
     path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
 
-    double h = stages_.current().initial_increment;
+    // The current stage's settings (the sequence updates them in place at each new stage).
+    const AnalysisSpec& stage = stages_.current();
+    double h = stage.initial_increment;
     failures_in_step_ = 0;
     summary.status = RunStatus::step_limit;
     summary.reason = "step limit reached";
-    while (step_ < stages_.current().max_steps) {
+    while (step_ < stage.max_steps) {
         if (control.interrupt && control.interrupt->load()) {
             stop({RunStatus::interrupted, "interrupted"});
             break;
         }
-        const double step_h = constraint_->landing(h, position(), stages_.current());
+        const double step_h = constraint_->landing(h, position(), stage);
         const Eigen::VectorXd u_saved = u_;
         const double lambda_saved = lambda_;
         const NewtonResult outcome = attempt_step(step_h, control, u_saved, lambda_saved, summary);
@@ -273,8 +272,8 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         // Adaptive increments also bound the error of the hinges' explicit pseudo-springs (η from
         // the start of the step): a step that carries a section further than max_yield_advance
         // into its yielding range is taken again, smaller in proportion (StepController::refined).
-        const double advance = stages_.current().adaptive ? system_.trial_yield_advance() : 0.0;
-        if (const double smaller = steps_.refined(step_h, advance, stages_.current().min_increment); smaller != 0.0) {
+        const double advance = stage.adaptive ? system_.trial_yield_advance() : 0.0;
+        if (const double smaller = steps_.refined(step_h, advance, stage.min_increment); smaller != 0.0) {
             roll_back(u_saved, lambda_saved);
             ++summary.refined_steps;
             h = smaller;
@@ -292,14 +291,13 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             break;
         }
 
-        h = steps_.after_success(stages_.current(), h, step_h, outcome, advance);
+        h = steps_.after_success(stage, h, step_h, outcome, advance);
         if (stages_.target_reached(lambda_, u_)) {
             if (stages_.has_next()) {
                 h = begin_next_stage();
                 continue;
             }
-            const AnalysisSpec& a = stages_.current();
-            std::string reason = a.target_load_factor ? "target load factor reached" : "target displacement reached";
+            std::string reason = stage.target_load_factor ? "target load factor reached" : "target displacement reached";
             if (stages_.number() > 1) reason += " (" + std::to_string(stages_.number()) + " stages)";
             stop({RunStatus::completed, reason});
             break;

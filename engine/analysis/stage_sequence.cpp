@@ -10,8 +10,7 @@ StageSequence::StageSequence(const Model& model)
     : first_(model.analysis), stages_(model.stages), current_(model.analysis) {}
 
 double StageSequence::control_value(const Eigen::VectorXd& u) const {
-    const DofRef& c = current_.control;
-    return c.sign * u[dofs_per_node * c.node + c.dof];
+    return current_.control.value_in(u);
 }
 
 double StageSequence::begin_next(double load_factor, const Eigen::VectorXd& u) {

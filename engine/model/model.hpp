@@ -162,6 +162,12 @@ struct DofRef {
     int node = 0;
     int dof = 1;
     double sign = 1.0; // reported value = sign * displacement
+
+    // Its reported value in a full displacement vector u (three DOFs a node).
+    template <class Vector>
+    double value_in(const Vector& u) const {
+        return sign * u[dofs_per_node * node + dof];
+    }
 };
 
 struct AnalysisSpec {
