@@ -22,7 +22,7 @@ Commands:
   sweep SCENE      many runs of a scene with keys varied (grid or Monte Carlo); sweep.csv
   merge DIR        sweep.csv from the runs a sweep folder holds (after GNU Parallel or Slurm)
   report OUT_DIR   one self-contained HTML page of a result folder (CI artifacts)
-  schema           the arrays a result series may hold, as a Markdown table
+  schema           the arrays a result series may hold (--scene: a scene's keys), as Markdown tables
 
 Run 'plastica COMMAND --help' for the options of a command.
 Exit codes: 0 success, 1 comparison failed, 2 bad input, 3 analysis stopped early,

@@ -8,6 +8,7 @@
 #include "render_error.hpp"
 #include "scene_error.hpp"
 #include "scene_reader.hpp"
+#include "scene_schema.hpp"
 #include "study.hpp"
 #include "study_chart.hpp"
 #include "study_table.hpp"
@@ -23,11 +24,15 @@
 namespace plastica::cli {
 
 int study_command(const Args& args) {
+    std::string names;
+    for (const std::string& key : studied_keys()) names += (names.empty() ? "" : ", ") + key;
+    const std::string vary_help = "NAME=v1,v2,… with NAME one of " + names +
+                                  " (repeatable); plasticity=hinges,distributed runs every ladder with each method, each against its own reference";
     po::options_description options("Options");
     options.add_options()
         ("scene", po::value<std::string>()->required(), "scene file (TOML)")
         ("vary", po::value<std::vector<std::string>>()->composing(),
-         "NAME=v1,v2,… with NAME elements, fibres, integration_points, segments or increment (repeatable); plasticity=hinges,distributed runs every ladder with each method, each against its own reference")
+         vary_help.c_str())
         ("reference", po::value<std::string>(), "exact, extrapolated, finest, or a CSV file of displacement,load (default: exact when the scene has a closed form; else extrapolated when methods are compared over three levels or more, finest otherwise)")
         ("at", po::value<std::string>(), "displacements where the error is reported, e.g. 20,40,60")
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>/study)");

@@ -1,6 +1,8 @@
 #include "scene_overrides.hpp"
 
 #include "scene_reader.hpp"
+#include "scene_schema.hpp"
+#include "toml_table_reader.hpp"
 
 #include <toml++/toml.h>
 
@@ -62,8 +64,25 @@ toml::table parse_value(const Override& o) {
 
 // Applies one override to the parsed scene; returns the path as the reader names it
 // (tables of an array by their index from 1), to recognise the reader's errors.
+// A path is TABLE.KEY or TABLE[index or name].KEY of a table and key the scene schema declares.
+void check_against_schema(const Override& o, const std::vector<Segment>& segments) {
+    const auto suggestion = [](const std::string& name, const std::vector<std::string>& known) {
+        const std::string near = nearest_key(name, known);
+        return near.empty() ? std::string() : "; did you mean '" + near + "'?";
+    };
+    const TableSpec* table = find_scene_table(segments.front().key);
+    if (!table) fail(o, "a scene has no table '" + segments.front().key + "'" + suggestion(segments.front().key, scene_table_names()));
+    if (segments.size() != 2) fail(o, "expected " + table->name + (table->array ? "[index or name]" : "") + ".KEY");
+    if (table->array && !segments.front().indexed)
+        fail(o, "'" + table->name + "' is a list: name one, e.g. " + table->name + "[1]." + segments.back().key);
+    if (!table->array && segments.front().indexed) fail(o, "[" + table->name + "] is one table, not a list");
+    if (!table->find_anywhere(segments.back().key))
+        fail(o, table->heading() + " has no key '" + segments.back().key + "'" + suggestion(segments.back().key, table->all_key_names()));
+}
+
 std::string apply(toml::table& root, const Override& o) {
     const std::vector<Segment> segments = split(o);
+    check_against_schema(o, segments);
     toml::table* table = &root;
     std::string canonical;
     for (std::size_t k = 0; k + 1 < segments.size(); ++k) {

@@ -31,7 +31,7 @@ public:
     SceneBuilder(const toml::table& root, std::string file) : root_(root), file_(std::move(file)) {}
 
     Model build() {
-        TomlTableReader top(root_, file_, "");
+        TomlTableReader top(root_, file_, "", scene_root_table());
         read_scene_table(top);
         read_units(top);
         read_materials(top);
@@ -51,8 +51,7 @@ public:
         read_analysis(top);
         read_stages(top);
         read_report(top);
-        top.finish({"scene", "units", "material", "section", "node", "line", "arc", "element", "support",
-                    "load", "distributed_load", "prescribed", "foundation", "self_contact", "analysis", "stage", "report"});
+        top.finish();
         if (!model_.loaded() && !model_.has_moving_base())
             throw SceneError(file_, 1, "load",
                              "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement and no moving base (base_motion)");
@@ -81,29 +80,29 @@ private:
     void read_scene_table(TomlTableReader& top) {
         const toml::table* t = top.table("scene");
         if (!t) top.fail("", "missing required table [scene] (with a 'name')");
-        TomlTableReader r(*t, file_, "scene", units());
+        TomlTableReader r(*t, file_, "scene", scene_table("scene"), units());
         model_.name = r.string("name");
         if (model_.name.empty() || model_.name.size() > 64 ||
             !std::all_of(model_.name.begin(), model_.name.end(), [](char c) {
                 return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
             }))
             r.fail("name", "expected 1 to 64 letters, digits, '_' or '-' (it names the output folder)");
-        model_.title = r.string_or("title", "");
-        r.finish({"name", "title"});
+        model_.title = r.string("title");
+        r.finish();
     }
 
     // [units]: the scene's length and force; numbers may then be written with units.
     void read_units(TomlTableReader& top) {
         const toml::table* t = top.table("units");
         if (!t) return;
-        TomlTableReader r(*t, file_, "units");
+        TomlTableReader r(*t, file_, "units", scene_table("units"));
         const std::string length = r.string("length"), force = r.string("force");
         try {
             units_.emplace(length, force);
         } catch (const UnitError& e) {
             r.fail(std::string(e.what()).find("length") != std::string::npos ? "length" : "force", e.what());
         }
-        r.finish({"length", "force"});
+        r.finish();
         model_.report.length_unit = length;
         model_.report.force_unit = force;
     }
@@ -112,30 +111,23 @@ private:
     void read_materials(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "material");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("material", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("material", i), scene_table("material"), units());
             const std::string name = r.string("name");
             if (materials_.count(name)) r.fail("name", "a material named '" + name + "' exists already");
             Material m;
-            m.E = r.positive("E", dimension::stress);
-            m.density = r.number_or("density", 0.0, dimension::mass_density);
-            if (m.density < 0.0) r.fail("density", "expected a density of at least 0");
-            std::vector<std::string> keys{"name", "E", "fy", "ultimate_strain", "density", "law"};
+            m.E = r.number("E");
+            m.density = r.number("density");
             if (r.has("fy")) {
                 SteelSpec s;
                 s.E = m.E;
-                s.fy = r.positive("fy", dimension::stress);
-                s.ultimate_strain = r.number_or("ultimate_strain", 0.0);
-                if (s.ultimate_strain < 0.0 || (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E))
+                s.fy = r.number("fy");
+                s.ultimate_strain = r.number("ultimate_strain");
+                if (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E)
                     r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
                 // The law and the keys of its own, as the registry lists them.
-                std::vector<std::string> laws;
-                for (const MaterialLaw& law : material_laws()) laws.push_back(law.name);
-                s.law = r.choice("law", laws, "bilinear");
-                const MaterialLaw& law = *find_material_law(s.law);
-                for (const std::string& key : law.parameters) {
-                    s.parameters[key] = r.number(key);
-                    keys.push_back(key);
-                }
+                s.law = r.choice("law");
+                r.choose_group(s.law);
+                for (const LawParameter& p : find_material_law(s.law)->parameters) s.parameters[p.name] = r.number(p.name);
                 try {
                     make_material(s, 0.0);
                 } catch (const MaterialParameterError& e) {
@@ -145,11 +137,7 @@ private:
             } else if (r.has("law")) {
                 r.fail("law", "a material law needs a yield stress 'fy'");
             }
-            for (const MaterialLaw& law : material_laws())
-                for (const std::string& key : law.parameters)
-                    if (r.has(key) && std::find(keys.begin(), keys.end(), key) == keys.end())
-                        r.fail(key, "a parameter of law = \"" + std::string(law.name) + "\", not of this material's law");
-            r.finish(keys);
+            r.finish();
             materials_[name] = m;
         }
     }
@@ -158,7 +146,7 @@ private:
     void read_sections(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "section");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("section", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("section", i), scene_table("section"), units());
             const std::string name = r.string("name");
             if (section_index_.count(name)) r.fail("name", "a section named '" + name + "' exists already");
             const std::string material = r.string("material");
@@ -172,29 +160,29 @@ private:
             // capacity that hinges hold.
             const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
             const std::string plasticity =
-                r.choice("plasticity", {"none", "hinges", "distributed"}, !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
+                r.choice_or("plasticity", !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
             if (plasticity != "none" && !m->second.steel)
                 r.fail("plasticity", "an inelastic section needs a material with 'fy'");
             if (plasticity == "distributed") {
                 s.plasticity = Plasticity::distributed;
-                s.formulation = r.choice("formulation", {"displacement", "force"}, "displacement") == "force" ? Formulation::force : Formulation::displacement;
+                s.formulation = r.choice("formulation") == "force" ? Formulation::force : Formulation::displacement;
                 if (s.formulation == Formulation::force) {
                     // Lobatto points: three integrate the elastic flexibility exactly.
-                    s.integration_points = r.integer_or("integration_points", default_force_based_points, 3, 10);
+                    s.integration_points = r.integer_or("integration_points", default_force_based_points);
+                    if (s.integration_points < 3)
+                        r.fail("integration_points", "expected a whole number from 3 to 10 for formulation = \"force\" (Gauss–Lobatto points include both ends)");
                     for (const char* key : {"segments", "segment_grading", "axial_strain"})
                         if (r.has(key)) r.fail(key, "a force-based member has no segments: its sections take the curvature their exact moments need");
                 }
-                else s.integration_points = r.integer_or("integration_points", default_integration_points, 2, 10); // one point leaves a mode without stiffness
-                s.segments = r.integer_or("segments", default_segments, 1, 16);
+                else s.integration_points = r.integer_or("integration_points", default_integration_points); // one point leaves a mode without stiffness
+                s.segments = r.integer("segments");
                 if (r.has("segment_grading")) {
                     if (s.segments < 3) r.fail("segment_grading", "grading needs segments = 3 or more");
                     s.segment_grading = r.number("segment_grading");
-                    if (!(s.segment_grading >= 0.25 && s.segment_grading <= 4.0))
-                        r.fail("segment_grading", "must lie between 0.25 and 4 (each segment's length over its neighbour's nearer the element end)");
                 }
                 if (r.has("axial_strain")) {
                     if (s.segments < 2) r.fail("axial_strain", "an axial strain per segment needs segments = 2 or more");
-                    s.axial_strain_per_segment = r.choice("axial_strain", {"per_element", "per_segment"}, "per_element") == "per_segment";
+                    s.axial_strain_per_segment = r.choice("axial_strain") == "per_segment";
                 }
             } else {
                 if (r.has("integration_points"))
@@ -212,9 +200,7 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
-            std::vector<std::string> keys{"name", "material", "shape", "plasticity", "formulation", "integration_points", "segments", "segment_grading", "axial_strain"};
-            keys.insert(keys.end(), shape.keys.begin(), shape.keys.end());
-            r.finish(keys);
+            r.finish();
             section_index_[name] = static_cast<int>(model_.sections.size());
             model_.sections.push_back(s);
         }
@@ -257,17 +243,17 @@ private:
     void read_nodes(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "node");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("node", i), units());
-            const int id = r.integer("id", 0, 1'000'000'000);
+            TomlTableReader r(*list[i].first, file_, indexed("node", i), scene_table("node"), units());
+            const int id = r.integer("id");
             if (node_ids_.count(id)) r.fail("id", "node id " + std::to_string(id) + " is used twice");
-            const double x = r.number("x", dimension::length), y = r.number("y", dimension::length);
+            const double x = r.number("x"), y = r.number("y");
             if (const int k = node_index_.find(x, y, merge_tolerance(x, y)); k >= 0)
                 for (const auto& [other, index] : node_ids_)
                     if (index == k) r.fail("id", "node " + std::to_string(id) + " lies on node " + std::to_string(other));
             model_.nodes.push_back({x, y});
             node_ids_[id] = static_cast<int>(model_.nodes.size()) - 1;
             node_index_.add(x, y, node_ids_[id]);
-            r.finish({"id", "x", "y"});
+            r.finish();
         }
     }
 
@@ -302,31 +288,31 @@ private:
     void read_lines(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "line");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("line", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("line", i), scene_table("line"), units());
             const std::string name = r.string_or("name", "line" + std::to_string(i + 1));
-            const auto a = r.point("start", dimension::length);
-            const auto b = r.point("end", dimension::length);
-            const int n = r.integer("elements", 1, max_elements);
+            const auto a = r.point("start");
+            const auto b = r.point("end");
+            const int n = r.integer("elements");
             const int section = section_of(r);
             if (std::hypot(b[0] - a[0], b[1] - a[1]) <= 0.0) r.fail("end", "a line needs a positive length (start and end coincide)");
             size_scale_ = std::max({size_scale_, std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])});
             const int first = static_cast<int>(model_.elements.size());
             add_member(name, line_points(a, b, n), section, r);
             read_releases(r, first, static_cast<int>(model_.elements.size()) - 1);
-            r.finish({"name", "start", "end", "elements", "section", "releases"});
+            r.finish();
         }
     }
 
     void read_arcs(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "arc");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("arc", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("arc", i), scene_table("arc"), units());
             const std::string name = r.string_or("name", "arc" + std::to_string(i + 1));
-            const auto c = r.point("center", dimension::length);
-            const double R = r.positive("radius", dimension::length);
+            const auto c = r.point("center");
+            const double R = r.number("radius");
             const double a0 = r.number("start_angle");
             const double a1 = r.number("end_angle");
-            const int n = r.integer("elements", 1, max_elements);
+            const int n = r.integer("elements");
             const int section = section_of(r);
             if (std::abs(a1 - a0) <= 0.0 || std::abs(a1 - a0) > 360.0)
                 r.fail("end_angle", "expected an arc of more than 0 and at most 360 degrees");
@@ -334,7 +320,7 @@ private:
             const int first = static_cast<int>(model_.elements.size());
             add_member(name, arc_points(c, R, a0, a1, n), section, r);
             read_releases(r, first, static_cast<int>(model_.elements.size()) - 1);
-            r.finish({"name", "center", "radius", "start_angle", "end_angle", "elements", "section", "releases"});
+            r.finish();
         }
     }
 
@@ -347,7 +333,7 @@ private:
     void read_elements(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "element");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("element", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("element", i), scene_table("element"), units());
             const toml::array* a = r.array("nodes");
             if (!a || a->size() != 2 || !(*a)[0].is_integer() || !(*a)[1].is_integer())
                 r.fail("nodes", "expected two node ids, e.g. nodes = [1, 2]");
@@ -356,7 +342,7 @@ private:
             add_element(n0, n1, section_of(r), r, "nodes");
             const int added = static_cast<int>(model_.elements.size()) - 1;
             read_releases(r, added, added);
-            r.finish({"nodes", "section", "releases"});
+            r.finish();
         }
     }
 
@@ -364,7 +350,7 @@ private:
     void read_self_contact(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "self_contact");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("self_contact", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("self_contact", i), scene_table("self_contact"), units());
             std::vector<std::string> names;
             const toml::node* on = r.node("on");
             if (const toml::array* a = on ? on->as_array() : nullptr) {
@@ -395,9 +381,9 @@ private:
             }
             for (std::size_t e = 0; e < taken.size(); ++e)
                 if (taken[e]) spec.elements.push_back(static_cast<int>(e));
-            if (r.has("stiffness")) spec.stiffness = r.positive("stiffness", dimension::force_per_length);
+            if (r.has("stiffness")) spec.stiffness = r.number("stiffness");
             model_.self_contact.push_back(std::move(spec));
-            r.finish({"on", "stiffness"});
+            r.finish();
         }
     }
 
@@ -418,9 +404,9 @@ private:
     // A node named by 'node = id' or by 'at = [x, y]'.
     int node_ref(TomlTableReader& r, const std::string& id_key = "node", const std::string& at_key = "at") {
         if (r.has(id_key) && r.has(at_key)) r.fail(at_key, "give either '" + id_key + "' or '" + at_key + "', not both");
-        if (r.has(id_key)) return node_by_id(r, id_key, r.integer(id_key, 0, 1'000'000'000));
+        if (r.has(id_key)) return node_by_id(r, id_key, r.integer(id_key));
         if (!r.has(at_key)) r.fail("", "missing '" + at_key + "' (a point [x, y]) or '" + id_key + "' (a node id)");
-        const auto p = r.point(at_key, dimension::length);
+        const auto p = r.point(at_key);
         return node_at(r, at_key, p);
     }
     int node_at(TomlTableReader& r, const std::string& key, const std::array<double, 2>& p) {
@@ -433,7 +419,7 @@ private:
     // The load pattern a load, pressure, prescribed displacement or moving base belongs to
     // ('pattern', default "main"), registered in Model::patterns on first use.
     int pattern_of(TomlTableReader& r) {
-        const std::string name = r.string_or("pattern", "main");
+        const std::string name = r.string("pattern");
         if (name.empty() || name.size() > 32 ||
             !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; }))
             r.fail("pattern", "expected 1 to 32 letters, digits, '_' or '-' (it names a curve column)");
@@ -445,7 +431,7 @@ private:
 
     // The pattern a stage drives: one with loads, pressures, prescribed displacements or a moving base.
     int driven_pattern(TomlTableReader& r) {
-        const std::string name = r.string_or("pattern", "main");
+        const std::string name = r.string("pattern");
         const auto known = std::find(model_.patterns.begin(), model_.patterns.end(), name);
         const int p = static_cast<int>(known - model_.patterns.begin());
         // A scene with nothing to drive at all is told so once it is read (build()).
@@ -480,7 +466,7 @@ private:
     void read_supports(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "support");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("support", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("support", i), scene_table("support"), units());
             Support s;
             s.node = node_ref(r);
             const toml::array* fix = r.array("fix");
@@ -489,7 +475,7 @@ private:
                 if (!f.is_string()) r.fail("fix", "expected DOF names 'ux', 'uy', 'rz'");
                 s.fixed[dof_index(r, "fix", *f.value<std::string>())] = true;
             }
-            r.finish({"node", "at", "fix"});
+            r.finish();
             model_.supports.push_back(s);
         }
     }
@@ -497,11 +483,10 @@ private:
     void read_loads(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "load");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("load", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("load", i), scene_table("load"), units());
             NodalLoad l;
             l.node = node_ref(r);
-            l.value = {r.number_or("fx", 0.0, dimension::force), r.number_or("fy", 0.0, dimension::force),
-                       r.number_or("moment", 0.0, dimension::moment)};
+            l.value = {r.number("fx"), r.number("fy"), r.number("moment")};
             l.pattern = pattern_of(r);
             if (l.value[0] == 0.0 && l.value[1] == 0.0 && l.value[2] == 0.0)
                 r.fail("", "a load needs a non-zero 'fx', 'fy' or 'moment'");
@@ -509,7 +494,7 @@ private:
             for (int d = 0; d < dofs_per_node; ++d) moves = moves || (l.value[d] != 0.0 && !supported(l.node, d));
             if (!moves) r.fail("", "the load acts only on supported DOFs of the node at " + describe_node(l.node) + ": it moves nothing");
             load_lines_.push_back(list[i].second);
-            r.finish({"node", "at", "fx", "fy", "moment", "pattern"});
+            r.finish();
             model_.loads.push_back(l);
         }
     }
@@ -520,7 +505,7 @@ private:
         nodal_loads_ = static_cast<int>(model_.loads.size());
         const Tables list = array_of_tables(top, "distributed_load");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("distributed_load", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("distributed_load", i), scene_table("distributed_load"), units());
             const std::string on = r.string("on");
             std::vector<int> elements;
             if (on == "all") {
@@ -530,11 +515,11 @@ private:
                 if (g == member_elements_.end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
                 elements = g->second;
             }
-            const double wx = r.number_or("wx", 0.0, dimension::force_per_length), wy = r.number_or("wy", 0.0, dimension::force_per_length);
-            const double pressure = r.number_or("pressure", 0.0, dimension::force_per_length); // per unit length of member
+            const double wx = r.number("wx"), wy = r.number("wy");
+            const double pressure = r.number("pressure"); // per unit length of member
             std::array<double, 2> gravity{0.0, 0.0};
             if (r.has("gravity")) {
-                gravity = r.point("gravity", dimension::acceleration);
+                gravity = r.point("gravity");
                 for (int e : elements)
                     if (model_.sections[model_.elements[e].section].mass_per_length <= 0.0)
                         r.fail("gravity", "self weight needs the material's 'density' (section '" +
@@ -553,22 +538,22 @@ private:
             if (!moves) r.fail("on", "every node of '" + on + "' is held: the load moves nothing");
             for (const auto& [node, f] : lumped)
                 if (f[0] != 0.0 || f[1] != 0.0) model_.loads.push_back({node, {f[0], f[1], 0.0}, pattern});
-            r.finish({"on", "wx", "wy", "pressure", "gravity", "pattern"});
+            r.finish();
         }
     }
 
     void read_prescribed(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "prescribed");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("prescribed", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("prescribed", i), scene_table("prescribed"), units());
             PrescribedDisplacement p;
             p.node = node_ref(r);
-            p.dof = dof_index(r, "dof", r.string("dof"));
+            p.dof = dof_index(r, "dof", r.choice("dof"));
             p.value = r.number("value", p.dof == 2 ? dimension::none : dimension::length); // a rotation in radians
             p.pattern = pattern_of(r);
             if (supported(p.node, p.dof))
                 r.fail("dof", "this DOF is also supported ([[support]] fix): a prescribed displacement replaces the support there; remove it from 'fix'");
-            r.finish({"node", "at", "dof", "value", "pattern"});
+            r.finish();
             model_.prescribed.push_back(p);
         }
     }
@@ -576,8 +561,8 @@ private:
     void read_foundations(TomlTableReader& top) {
         const Tables list = array_of_tables(top, "foundation");
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("foundation", i), units());
-            const std::string kind = r.choice("kind", {"unilateral", "bilateral", "tensionless"}, "bilateral");
+            TomlTableReader r(*list[i].first, file_, indexed("foundation", i), scene_table("foundation"), units());
+            const std::string kind = r.choice("kind");
             const bool unilateral = kind == "unilateral", tensionless = kind == "tensionless";
             std::vector<int> nodes;
             const std::string on = r.string_or("on", "");
@@ -599,7 +584,7 @@ private:
             }
             if (r.has("below")) {
                 // Keeps only the selected nodes whose initial height is at most this value.
-                const double limit = r.number("below", dimension::length);
+                const double limit = r.number("below");
                 if (nodes.empty()) r.fail("below", "'below' filters the nodes chosen by 'on' or 'at'");
                 std::vector<int> kept;
                 for (int n : nodes)
@@ -617,13 +602,11 @@ private:
                 }
             }
             // Springs at nodes (force per length, moment per radian) or per unit length of member.
-            const bool per_length = r.boolean_or("per_length", false);
+            const bool per_length = r.boolean("per_length");
             const Dimension k_dimension = per_length ? dimension::stress : dimension::force_per_length;
             const Dimension krot_dimension = per_length ? dimension::force : dimension::moment;
-            const double kx = r.number_or("kx", 0.0, k_dimension), ky = r.number_or("ky", 0.0, k_dimension);
-            const double kr = r.number_or("krot", 0.0, krot_dimension);
-            for (const auto& [key, v] : {std::pair{"kx", kx}, std::pair{"ky", ky}, std::pair{"krot", kr}})
-                if (v < 0.0) r.fail(key, "expected a stiffness ≥ 0");
+            const double kx = r.number("kx", k_dimension), ky = r.number("ky", k_dimension);
+            const double kr = r.number("krot", krot_dimension);
             if (unilateral && !(ky > 0.0)) r.fail("ky", "a unilateral base needs a positive normal stiffness 'ky'");
             if (tensionless && !(ky > 0.0)) r.fail("ky", "a tensionless bed needs a positive stiffness 'ky' along its 'direction'");
             if (tensionless && (kx != 0.0 || kr != 0.0))
@@ -637,13 +620,13 @@ private:
                 BaseLine base;
                 double lowest = 1e300;
                 for (int n : nodes) lowest = std::min(lowest, model_.nodes[n].y);
-                base.point = r.has("base_point") ? r.point("base_point", dimension::length) : std::array<double, 2>{0.0, lowest};
+                base.point = r.has("base_point") ? r.point("base_point") : std::array<double, 2>{0.0, lowest};
                 base.normal = r.has("base_normal") ? r.point("base_normal") : std::array<double, 2>{0.0, 1.0};
                 const double nn = std::hypot(base.normal[0], base.normal[1]);
                 if (!(nn > 0.0)) r.fail("base_normal", "expected a non-zero vector");
                 base.normal = {base.normal[0] / nn, base.normal[1] / nn};
                 // A platen: the base moves by λ·base_motion (the load factor drives it).
-                if (r.has("base_motion")) base.motion = r.point("base_motion", dimension::length);
+                if (r.has("base_motion")) base.motion = r.point("base_motion");
                 if (r.has("pattern") && !base.moves()) r.fail("pattern", "a pattern drives a moving base ('base_motion')");
                 if (base.moves()) base.pattern = pattern_of(r);
                 // Foundations on the same line share it; another line is another base.
@@ -674,8 +657,7 @@ private:
                 s.base = base_index;
                 model_.springs.push_back(s);
             }
-            r.finish({"kind", "on", "at", "below", "halve_at", "kx", "ky", "krot", "per_length", "base_point", "base_normal",
-                      "base_motion", "direction", "pattern"});
+            r.finish();
         }
     }
 
@@ -693,7 +675,7 @@ private:
             return out;
         }
         if (!given) return out;
-        const std::string side = r.choice("direction", {"left_normal", "right_normal"}, "left_normal");
+        const std::string side = r.choice("direction");
         const double sign = side == "left_normal" ? 1.0 : -1.0;
         for (std::size_t k = 0; k < nodes.size(); ++k) {
             const std::optional<std::array<double, 2>> normal = member_normal(model_, nodes[k]);
@@ -709,7 +691,7 @@ private:
         const Tables list = array_of_tables(top, "stage");
         const AnalysisSpec& a = model_.analysis;
         for (std::size_t i = 0; i < list.size(); ++i) {
-            TomlTableReader r(*list[i].first, file_, indexed("stage", i), units());
+            TomlTableReader r(*list[i].first, file_, indexed("stage", i), scene_table("stage"), units());
             StageSpec s;
             s.pattern = driven_pattern(r);
             s.control = model_.stages.empty() ? a.control : model_.stages.back().control;
@@ -719,11 +701,11 @@ private:
                 for (const char* key : {"control_dof", "control_sign"})
                     if (r.has(key)) r.fail(key, "name the controlled point as well ('control_at' or 'control_node')");
             }
-            const std::string scheme = r.choice("scheme", {"load_control", "displacement_control"}, "load_control");
+            const std::string scheme = r.choice("scheme");
             s.scheme = scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
             const Dimension controlled = control_dimension(s.control);
-            s.increment = r.positive("increment", s.scheme == Scheme::displacement_control ? controlled : dimension::none);
-            s.adaptive = r.boolean_or("adaptive", false);
+            s.increment = r.number("increment", s.scheme == Scheme::displacement_control ? controlled : dimension::none);
+            s.adaptive = r.boolean("adaptive");
             if (r.has("target_load_factor") && r.has("target_displacement"))
                 r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");
             if (r.has("target_load_factor")) s.target_load_factor = r.number("target_load_factor");
@@ -743,8 +725,7 @@ private:
                     if (p.node == s.control.node && p.dof == s.control.dof)
                         r.fail("scheme", "the controlled DOF has a prescribed displacement" + named);
             }
-            r.finish({"scheme", "increment", "adaptive", "target_load_factor", "target_displacement", "pattern",
-                      "control_at", "control_node", "control_dof", "control_sign"});
+            r.finish();
             model_.stages.push_back(s);
         }
     }
@@ -782,37 +763,37 @@ private:
     void read_analysis(TomlTableReader& top) {
         const toml::table* t = top.table("analysis");
         if (!t) top.fail("", "missing required table [analysis]");
-        TomlTableReader r(*t, file_, "analysis", units());
+        TomlTableReader r(*t, file_, "analysis", scene_table("analysis"), units());
         AnalysisSpec& a = model_.analysis;
-        const std::string scheme = r.choice("scheme", {"arc_length", "load_control", "displacement_control"}, "arc_length");
+        const std::string scheme = r.choice("scheme");
         a.scheme = scheme == "arc_length" ? Scheme::arc_length
                  : scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
         // Displacement control steps the controlled DOF; load control and arc length step λ.
-        const Dimension controlled = r.has("control_dof") && r.string("control_dof") == "rz" ? dimension::none : dimension::length;
+        const Dimension controlled = r.choice("control_dof") == "rz" ? dimension::none : dimension::length;
         const Dimension step = a.scheme == Scheme::displacement_control ? controlled : dimension::none;
-        a.initial_increment = r.positive("increment", step);
-        a.min_increment = r.positive_or("min_increment", a.initial_increment * 1e-6, step);
-        a.max_increment = r.positive_or("max_increment", 0.0 + a.initial_increment * 10.0, step);
+        a.initial_increment = r.number("increment", step);
+        a.min_increment = r.number_or("min_increment", a.initial_increment * 1e-6, step);
+        a.max_increment = r.number_or("max_increment", 0.0 + a.initial_increment * 10.0, step);
         a.adaptive = r.boolean_or("adaptive", a.scheme != Scheme::load_control);
         // Fibre branches along a member settle in about three extra iterations at any step
         // size (Newton freezes them from its third iteration): a plastic zone asks for more.
-        a.desired_iterations = r.integer_or("desired_iterations", model_.has_plasticity(Plasticity::distributed) ? 8 : 5, 1, 100);
-        a.max_iterations = r.integer_or("max_iterations", AnalysisSpec{}.max_iterations, 1, 1000);
+        a.desired_iterations = r.integer_or("desired_iterations", model_.has_plasticity(Plasticity::distributed) ? 8 : 5);
+        a.max_iterations = r.integer("max_iterations");
         if (a.max_increment > 0.0 && a.min_increment > a.max_increment)
             r.fail("min_increment", "must not exceed max_increment");
         if (a.min_increment > a.initial_increment) r.fail("min_increment", "must not exceed the first increment");
         if (r.has("max_increment") && a.max_increment < a.initial_increment)
             r.fail("max_increment", "must not be below the first increment");
-        a.max_steps = r.integer_or("max_steps", AnalysisSpec{}.max_steps, 1, 10'000'000);
+        a.max_steps = r.integer("max_steps");
         a.residual_tolerance_follows_floor = !r.has("residual_tolerance");
-        a.residual_tolerance = r.positive_or("residual_tolerance", AnalysisSpec::default_residual_tolerance);
-        a.displacement_tolerance = r.positive_or("displacement_tolerance", AnalysisSpec::default_displacement_tolerance);
-        a.allow_crossing = r.boolean_or("allow_crossing", false);
+        a.residual_tolerance = r.number_or("residual_tolerance", AnalysisSpec::default_residual_tolerance);
+        a.displacement_tolerance = r.number("displacement_tolerance");
+        a.allow_crossing = r.boolean("allow_crossing");
         if (r.has("target_load_factor") && r.has("target_displacement"))
             r.fail("target_displacement", "give one stop, 'target_load_factor' or 'target_displacement', not both");
         if (r.has("target_load_factor"))
-            a.target_load_factor = r.positive("target_load_factor"); // a load the other way: reverse the [[load]]
-        if (r.has("target_displacement")) a.target_displacement = r.positive("target_displacement", controlled);
+            a.target_load_factor = r.number("target_load_factor"); // a load the other way: reverse the [[load]]
+        if (r.has("target_displacement")) a.target_displacement = r.number("target_displacement", controlled);
         a.pattern = driven_pattern(r);
         if (r.has("control_at") || r.has("control_node")) {
             a.control = read_control(r, a.pattern);
@@ -843,10 +824,7 @@ private:
             held[static_cast<std::size_t>(dofs_per_node * p.node + p.dof)] = true;
         if (std::all_of(held.begin(), held.end(), [](bool h) { return h; }))
             r.fail("", "every degree of freedom is supported or prescribed: nothing can move (see the [[support]] tables)");
-        r.finish({"scheme", "increment", "min_increment", "max_increment", "adaptive", "desired_iterations",
-                  "max_iterations", "max_steps", "residual_tolerance", "displacement_tolerance",
-                  "target_load_factor", "target_displacement", "control_at", "control_node", "control_dof",
-                  "control_sign", "allow_crossing", "pattern"});
+        r.finish();
     }
 
     // A controlled (and reported) DOF: 'control_at' or 'control_node', 'control_dof' (default
@@ -855,7 +833,7 @@ private:
     DofRef read_control(TomlTableReader& r, int pattern) {
         DofRef c;
         c.node = node_ref(r, "control_node", "control_at");
-        c.dof = dof_index(r, "control_dof", r.string_or("control_dof", "uy"));
+        c.dof = dof_index(r, "control_dof", r.choice("control_dof"));
         double load_on_control = 0.0;
         for (const NodalLoad& l : model_.loads)
             if (l.node == c.node && l.pattern == pattern) load_on_control += l.value[c.dof];
@@ -880,9 +858,9 @@ private:
         const bool parallel = model_.loads_parallel();
         infer_report_measure(model_);
         if (!t) return;
-        TomlTableReader r(*t, file_, "report", units());
+        TomlTableReader r(*t, file_, "report", scene_table("report"), units());
         if (r.has("load")) {
-            const std::string measure = r.choice("load", {"total", "factor"}, "total");
+            const std::string measure = r.choice("load");
             if (measure == "total" && !parallel)
                 r.fail("load", "the loads are not parallel, so their total has no direction: report the load factor (load = \"factor\")");
             if (measure == "factor") {
@@ -892,18 +870,16 @@ private:
                 model_.report.measure = ReportSpec::Measure::total;
             }
         }
-        model_.report.load_scale = r.positive_or("load_scale", 1.0);
+        model_.report.load_scale = r.number("load_scale");
         model_.report.load_label = r.string_or("load_label", model_.report.load_label);
         model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
-        model_.report.exact = r.string_or("exact", "");
-        if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x", dimension::length);
+        model_.report.exact = r.choice_or("exact", "");
+        if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x");
         for (const auto& [key, unit] : {std::pair{"length_unit", &model_.report.length_unit}, std::pair{"force_unit", &model_.report.force_unit}}) {
             *unit = r.string_or(key, *unit); // [units] names them unless [report] relabels
             if (unit->size() > 16 || unit->find_first_of("\n\r\t") != std::string::npos)
                 r.fail(key, "expected a short unit name such as \"mm\" or \"kN\"");
         }
-        if (!model_.report.exact.empty() && model_.report.exact != "cantilever_tip_load")
-            r.fail("exact", "the closed forms known are: cantilever_tip_load");
         if (model_.report.exact == "cantilever_tip_load" && !is_cantilever_with_tip_load(model_))
             r.fail("exact", "cantilever_tip_load is the closed form of a straight elastic cantilever, clamped at one end, "
                             "with one transverse load at the other and nothing else; this scene is not one");
@@ -914,7 +890,7 @@ private:
             for (const Node& n : model_.nodes) left = left || n.x < x0 - tol, right = right || n.x > x0 + tol;
             if (left && right) r.fail("mirror_x", "the structure lies on both sides of this line: a half model lies on one side");
         }
-        r.finish({"load", "load_scale", "load_label", "displacement_label", "exact", "mirror_x", "length_unit", "force_unit"});
+        r.finish();
     }
 
     const toml::table& root_;

@@ -1,5 +1,6 @@
-// The section shapes a scene may name (`[[section]] shape = …`): each with its own keys and the
-// builder of its fibre layout and elastic properties. A new shape is one entry here.
+// The section shapes a scene may name (`[[section]] shape = …`): each with the builder of its
+// fibre layout and elastic properties. A new shape is one entry here and its keys in
+// io/scene_schema.cpp (declared `.of("shape name")`).
 #pragma once
 
 #include "model/model.hpp"
@@ -19,13 +20,12 @@ struct ShapeMaterial {
 
 struct SectionShape {
     std::string name;
-    std::vector<std::string> keys; // the shape's own keys, beside those every section has
     SectionSpec (*build)(TomlTableReader& table, const ShapeMaterial& material);
 };
 
 const std::vector<SectionShape>& section_shapes();
-// The shape a [[section]] table names (default "properties"); a key of another shape is a
-// located error naming that shape.
+// The shape a [[section]] table names (default "properties"), chosen as the table's group so
+// that a key of another shape is a located error naming that shape.
 const SectionShape& read_section_shape(TomlTableReader& table);
 
 // A b × h rectangle in `fibres` equal layers through its depth.

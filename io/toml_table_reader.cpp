@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace plastica {
@@ -38,9 +39,10 @@ std::string nearest_key(const std::string& key, const std::vector<std::string>& 
     return best;
 }
 
-TomlTableReader::TomlTableReader(const toml::table& table, std::string file, std::string path, const UnitSystem* units)
+TomlTableReader::TomlTableReader(const toml::table& table, std::string file, std::string path, const TableSpec& spec,
+                                 const UnitSystem* units)
     : table_(table), file_(std::move(file)), path_(std::move(path)),
-      line_(plastica::line_of(static_cast<const toml::node&>(table))), units_(units) {}
+      line_(plastica::line_of(static_cast<const toml::node&>(table))), spec_(spec), units_(units) {}
 
 bool TomlTableReader::has(const std::string& key) const { return table_.contains(key); }
 
@@ -55,6 +57,26 @@ std::string TomlTableReader::qualified(const std::string& key) const {
 
 void TomlTableReader::fail(const std::string& key, const std::string& what) const {
     throw SceneError(file_, key.empty() ? line_ : line_of(key), key.empty() ? path_ : qualified(key), what);
+}
+
+const KeySpec& TomlTableReader::declared(const std::string& key) const {
+    if (const KeySpec* k = spec_.find(key, group_)) return *k;
+    throw std::logic_error("io/scene_schema.cpp declares no key '" + key + "' in " + spec_.heading() +
+                           (group_.empty() ? "" : " for " + spec_.group_key + " = \"" + group_ + "\""));
+}
+
+void TomlTableReader::missing(const KeySpec& k, const char* what) const {
+    fail("", "missing required key '" + k.name + "' (" + what + ")");
+}
+
+void TomlTableReader::choose_group(const std::string& value) {
+    group_ = value;
+    for (auto&& [name, v] : table_) {
+        const std::string key(name.str());
+        const KeySpec* elsewhere = spec_.find_anywhere(key);
+        if (spec_.find(key, group_) || !elsewhere) continue;
+        fail(key, "a key of " + spec_.group_key + " = \"" + elsewhere->group + "\", not of " + spec_.group_key + " = \"" + group_ + "\"");
+    }
 }
 
 const toml::node* TomlTableReader::node(const std::string& key) {
@@ -81,96 +103,131 @@ std::optional<double> TomlTableReader::value_of(const toml::node& n, const std::
     return std::nullopt;
 }
 
-double TomlTableReader::number(const std::string& key, Dimension d) {
-    const toml::node* n = node(key);
-    if (!n) fail("", "missing required key '" + key + "' (a number)");
-    const std::optional<double> v = value_of(*n, key, d);
-    if (!v) fail(key, d == dimension::none || !units_ ? "expected a number" : "expected a number, or a string with its unit");
-    if (!std::isfinite(*v)) fail(key, "expected a finite number, got " + std::to_string(*v));
+std::string out_of_range_message(const KeySpec& k, double value) {
+    std::ostringstream s;
+    s << std::setprecision(12);
+    const KeyRange& r = k.range;
+    const bool lo = std::isfinite(r.min), hi = std::isfinite(r.max);
+    const char* what = k.kind == ValueKind::integer ? "a whole number" : "a number";
+    if (lo && !hi && r.min == 0.0 && r.min_open) s << "expected a positive number";
+    else if (lo && hi && !r.min_open && !r.max_open) s << "expected " << what << " from " << r.min << " to " << r.max;
+    else if (lo && hi) s << "expected " << what << " in " << (r.min_open ? "(" : "[") << r.min << ", " << r.max << (r.max_open ? ")" : "]");
+    else if (lo) s << "expected " << what << (r.min_open ? " above " : " of at least ") << r.min;
+    else s << "expected " << what << (r.max_open ? " below " : " of at most ") << r.max;
+    s << ", got " << value;
+    return s.str();
+}
+
+double TomlTableReader::checked_number(const KeySpec& k, Dimension d) {
+    const toml::node* n = node(k.name);
+    const std::optional<double> v = value_of(*n, k.name, d);
+    if (!v) fail(k.name, d == dimension::none || !units_ ? "expected a number" : "expected a number, or a string with its unit");
+    if (!std::isfinite(*v)) fail(k.name, "expected a finite number, got " + std::to_string(*v));
+    if (!k.range.contains(*v)) fail(k.name, out_of_range_message(k, *v));
     return *v;
 }
 
-double TomlTableReader::positive(const std::string& key, Dimension d) {
-    const double v = number(key, d);
-    if (!(v > 0.0)) {
-        std::ostringstream s;
-        s << "expected a positive number, got " << v;
-        fail(key, s.str());
-    }
-    return v;
+double TomlTableReader::number(const std::string& key) { return number(key, declared(key).dimension); }
+
+double TomlTableReader::number(const std::string& key, Dimension d) {
+    const KeySpec& k = declared(key);
+    if (has(key)) return checked_number(k, d);
+    used_.insert(key);
+    if (const double* v = std::get_if<double>(&k.fixed_default)) return *v;
+    missing(k, "a number");
+}
+
+std::optional<double> TomlTableReader::optional_number(const std::string& key) {
+    return optional_number(key, declared(key).dimension);
 }
 
 std::optional<double> TomlTableReader::optional_number(const std::string& key, Dimension d) {
-    if (!has(key)) {
-        used_.insert(key);
-        return std::nullopt;
-    }
-    return number(key, d);
+    const KeySpec& k = declared(key);
+    if (has(key)) return checked_number(k, d);
+    used_.insert(key);
+    return std::nullopt;
+}
+
+double TomlTableReader::number_or(const std::string& key, double fallback) {
+    return number_or(key, fallback, declared(key).dimension);
 }
 
 double TomlTableReader::number_or(const std::string& key, double fallback, Dimension d) {
-    return has(key) ? number(key, d) : (used_.insert(key), fallback);
+    return optional_number(key, d).value_or(fallback);
 }
 
-double TomlTableReader::positive_or(const std::string& key, double fallback, Dimension d) {
-    return has(key) ? positive(key, d) : (used_.insert(key), fallback);
-}
-
-int TomlTableReader::integer(const std::string& key, int min, int max) {
+int TomlTableReader::integer(const std::string& key) {
+    const KeySpec& k = declared(key);
     const toml::node* n = node(key);
-    if (!n) fail("", "missing required key '" + key + "' (a whole number)");
+    if (!n) {
+        if (const double* v = std::get_if<double>(&k.fixed_default)) return static_cast<int>(*v);
+        missing(k, "a whole number");
+    }
     if (!n->is_integer()) fail(key, "expected a whole number");
     const int64_t v = *n->value<int64_t>();
-    if (v < min || v > max)
-        fail(key, "expected a whole number from " + std::to_string(min) + " to " +
-                      std::to_string(max) + ", got " + std::to_string(v));
+    if (!k.range.contains(static_cast<double>(v))) fail(key, out_of_range_message(k, static_cast<double>(v)));
     return static_cast<int>(v);
 }
 
-int TomlTableReader::integer_or(const std::string& key, int fallback, int min, int max) {
-    return has(key) ? integer(key, min, max) : (used_.insert(key), fallback);
+int TomlTableReader::integer_or(const std::string& key, int fallback) {
+    declared(key);
+    return has(key) ? integer(key) : (used_.insert(key), fallback);
 }
 
-bool TomlTableReader::boolean_or(const std::string& key, bool fallback) {
-    if (!has(key)) {
-        used_.insert(key);
-        return fallback;
-    }
+bool TomlTableReader::boolean(const std::string& key) {
+    const KeySpec& k = declared(key);
     const toml::node* n = node(key);
+    if (!n) {
+        if (const bool* v = std::get_if<bool>(&k.fixed_default)) return *v;
+        missing(k, "true or false");
+    }
     if (!n->is_boolean()) fail(key, "expected true or false");
     return *n->value<bool>();
 }
 
+bool TomlTableReader::boolean_or(const std::string& key, bool fallback) {
+    declared(key);
+    return has(key) ? boolean(key) : (used_.insert(key), fallback);
+}
+
 std::string TomlTableReader::string(const std::string& key) {
+    const KeySpec& k = declared(key);
     const toml::node* n = node(key);
-    if (!n) fail("", "missing required key '" + key + "' (a string)");
+    if (!n) {
+        if (const std::string* v = std::get_if<std::string>(&k.fixed_default)) return *v;
+        missing(k, "a string");
+    }
     if (!n->is_string()) fail(key, "expected a string");
     return *n->value<std::string>();
 }
 
 std::string TomlTableReader::string_or(const std::string& key, const std::string& fallback) {
+    declared(key);
     return has(key) ? string(key) : (used_.insert(key), fallback);
 }
 
-std::string TomlTableReader::choice(const std::string& key, std::initializer_list<const char*> options,
-                                    const std::string& fallback) {
-    return choice(key, std::vector<std::string>(options.begin(), options.end()), fallback);
-}
-
-std::string TomlTableReader::choice(const std::string& key, const std::vector<std::string>& options,
-                                    const std::string& fallback) {
-    const std::string v = string_or(key, fallback);
+std::string TomlTableReader::choice(const std::string& key) {
+    const KeySpec& k = declared(key);
+    const std::string v = string(key);
     std::string list;
-    for (const std::string& o : options) {
+    for (const std::string& o : k.choices) {
         if (v == o) return v;
         list += (list.empty() ? "'" : ", '") + o + "'";
     }
     fail(key, "expected one of " + list + ", got '" + v + "'");
 }
 
+std::string TomlTableReader::choice_or(const std::string& key, const std::string& fallback) {
+    declared(key);
+    return has(key) ? choice(key) : (used_.insert(key), fallback);
+}
+
+std::array<double, 2> TomlTableReader::point(const std::string& key) { return point(key, declared(key).dimension); }
+
 std::array<double, 2> TomlTableReader::point(const std::string& key, Dimension d) {
+    const KeySpec& k = declared(key);
     const toml::node* n = node(key);
-    if (!n) fail("", "missing required key '" + key + "' (a point [x, y])");
+    if (!n) missing(k, "a point [x, y]");
     return point_in(*n, key, d);
 }
 
@@ -186,6 +243,7 @@ std::array<double, 2> TomlTableReader::point_in(const toml::node& item, const st
 }
 
 const toml::table* TomlTableReader::table(const std::string& key) {
+    declared(key);
     const toml::node* n = node(key);
     if (!n) return nullptr;
     if (!n->is_table()) fail(key, "expected a table");
@@ -193,20 +251,22 @@ const toml::table* TomlTableReader::table(const std::string& key) {
 }
 
 const toml::array* TomlTableReader::array(const std::string& key) {
+    declared(key);
     const toml::node* n = node(key);
     if (!n) return nullptr;
     if (!n->is_array()) fail(key, "expected an array");
     return n->as_array();
 }
 
-void TomlTableReader::finish(std::initializer_list<const char*> known_keys) const {
-    finish(std::vector<std::string>(known_keys.begin(), known_keys.end()));
-}
-
-void TomlTableReader::finish(const std::vector<std::string>& known) const {
+void TomlTableReader::finish() const {
+    const std::vector<std::string> known = spec_.key_names(group_);
     for (auto&& [k, v] : table_) {
         const std::string key(k.str());
-        if (used_.count(key) || std::find(known.begin(), known.end(), key) != known.end()) continue;
+        if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+        if (const KeySpec* elsewhere = spec_.find_anywhere(key))
+            throw SceneError(file_, plastica::line_of(v), qualified(key),
+                             "a key of " + spec_.group_key + " = \"" + elsewhere->group + "\"" +
+                                 (group_.empty() ? std::string() : ", not of " + spec_.group_key + " = \"" + group_ + "\""));
         const std::string near = nearest_key(key, known);
         throw SceneError(file_, plastica::line_of(v), qualified(key),
                          "unknown key" + (near.empty() ? std::string() : "; did you mean '" + near + "'?"));

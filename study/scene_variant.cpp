@@ -3,9 +3,11 @@
 #include "scene_error.hpp"
 #include "study_error.hpp"
 #include "scene_reader.hpp"
+#include "scene_schema.hpp"
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -14,14 +16,21 @@ namespace plastica {
 
 namespace {
 
-int set_in_tables(toml::table& root, const char* array, const char* key, double value) {
+// Sets `key` in every table of kind `table` that names it (a whole number, or for a float key
+// the value as given); returns how many.
+int set_where_named(toml::table& root, const TableSpec& table, const std::string& key, double value) {
+    const KeySpec& spec = *table.find_anywhere(key);
+    const auto set = [&](toml::table& t) {
+        if (!t.contains(key)) return 0;
+        if (spec.kind == ValueKind::integer) t.insert_or_assign(key, static_cast<int64_t>(std::llround(value)));
+        else t.insert_or_assign(key, value);
+        return 1;
+    };
     int changed = 0;
-    if (toml::array* list = root[array].as_array())
-        for (toml::node& item : *list)
-            if (toml::table* t = item.as_table(); t && t->contains(key)) {
-                t->insert_or_assign(key, static_cast<int64_t>(std::llround(value)));
-                ++changed;
-            }
+    if (toml::array* list = root[table.name].as_array())
+        for (toml::node& item : *list) changed += item.as_table() ? set(*item.as_table()) : 0;
+    else if (toml::table* one = root[table.name].as_table())
+        changed += set(*one);
     return changed;
 }
 
@@ -68,12 +77,15 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
     } catch (const toml::parse_error& e) {
         throw SceneError(file, static_cast<int>(e.source().begin.line), "", std::string(e.description()));
     }
+    const std::vector<std::string> studied = studied_keys();
+    if (std::find(studied.begin(), studied.end(), parameter) == studied.end()) {
+        std::string names;
+        for (std::size_t k = 0; k < studied.size(); ++k)
+            names += (k == 0 ? "" : k + 1 == studied.size() ? " and " : ", ") + studied[k];
+        throw StudyError("cannot vary '" + parameter + "': the parameters are " + names);
+    }
     int changed = 0;
-    if (parameter == "elements") {
-        changed = set_in_tables(root, "line", "elements", value) + set_in_tables(root, "arc", "elements", value);
-    } else if (parameter == "fibres") {
-        changed = set_in_tables(root, "section", "fibres", value);
-    } else if (parameter == "integration_points" || parameter == "segments") {
+    if (parameter == "integration_points" || parameter == "segments") {
         // Every section with distributed plasticity, whether or not it names the count.
         if (toml::array* sections = root["section"].as_array())
             for (toml::node& item : *sections)
@@ -81,17 +93,21 @@ Model scene_variant(const std::string& file, const std::string& parameter, doubl
                     t->insert_or_assign(parameter, static_cast<int64_t>(std::llround(value)));
                     ++changed;
                 }
-    } else if (parameter == "increment") {
-        if (toml::table* a = root["analysis"].as_table(); a && a->contains("increment")) {
-            const double old = a->get("increment")->value_or(value);
-            a->insert_or_assign("increment", value);
-            // Room for the smaller steps to reach the same target.
-            const int64_t steps = (*a)["max_steps"].value_or(int64_t{200});
-            a->insert_or_assign("max_steps", std::max<int64_t>(steps, static_cast<int64_t>(std::ceil(steps * old / value))));
-            changed = 1;
-        }
     } else {
-        throw StudyError("cannot vary '" + parameter + "': the parameters are elements, fibres, integration_points, segments and increment");
+        // Every table the schema lets a study vary this key in, where the scene names it.
+        int64_t old_steps = 0;
+        double old_increment = value;
+        if (parameter == "increment")
+            if (toml::table* a = root["analysis"].as_table()) {
+                old_steps = (*a)["max_steps"].value_or(int64_t{200});
+                old_increment = (*a)["increment"].value_or(value);
+            }
+        for (const TableSpec& table : scene_schema())
+            if (const KeySpec* k = table.find_anywhere(parameter); k && k->studied) changed += set_where_named(root, table, parameter, value);
+        // Room for the smaller steps to reach the same target.
+        if (parameter == "increment" && changed > 0)
+            root["analysis"].as_table()->insert_or_assign(
+                "max_steps", std::max<int64_t>(old_steps, static_cast<int64_t>(std::ceil(old_steps * old_increment / value))));
     }
     if (changed == 0) throw StudyError(file + ": no '" + parameter + "' to vary in this scene");
     if (!plasticity.empty() && set_plasticity(root, plasticity) == 0)

@@ -84,7 +84,7 @@ TEST_CASE("The registry makes every law it lists and names what is wrong", "[mat
     for (const MaterialLaw& law : material_laws()) {
         SteelSpec s = bilinear_steel(E, fy);
         s.law = law.name;
-        for (const std::string& key : law.parameters) s.parameters[key] = 0.01;
+        for (const LawParameter& p : law.parameters) s.parameters[p.name] = 0.01;
         auto m = make_material(s, 0.0);
         CAPTURE(law.name);
         CHECK(m->elastic_modulus() == E);

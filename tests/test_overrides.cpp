@@ -3,7 +3,7 @@
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
 
-#include "analysis/path_following.hpp"
+#include "model_fingerprint.hpp"
 
 #include <toml++/toml.h>
 
@@ -52,13 +52,17 @@ TEST_CASE("Overrides set keys by index and by name, read as TOML values", "[scen
 
 TEST_CASE("A bad override is named in its error", "[scene][overrides]") {
     CHECK(error_of({"material[steel].fy=-1"}) == "--set material[steel].fy: expected a positive number, got -1");
-    CHECK(error_of({"analysis.incremnt=2"}) == "--set analysis.incremnt: unknown key; did you mean 'increment'?");
+    // Paths are checked against the scene schema before anything is read.
+    CHECK(error_of({"analysis.incremnt=2"}) == "--set analysis.incremnt: [analysis] has no key 'incremnt'; did you mean 'increment'?");
+    CHECK(error_of({"anlysis.increment=2"}) == "--set anlysis.increment: a scene has no table 'anlysis'; did you mean 'analysis'?");
+    CHECK(error_of({"analysis[1].increment=2"}) == "--set analysis[1].increment: [analysis] is one table, not a list");
+    CHECK(error_of({"section[ring].diameter=2"}).find("section[ring].diameter") != std::string::npos);
     CHECK(error_of({"material[iron].fy=2"}) == "--set material[iron].fy: no [[material]] named 'iron'");
     CHECK(error_of({"material[3].fy=2"}) == "--set material[3].fy: the scene has 1 [[material]] table(s), not 3");
     CHECK(error_of({"foundation[1].ky=abc def"}) ==
           "--set foundation[1].ky: cannot read 'abc def' as a TOML value (quote strings with spaces)");
     CHECK(error_of({"analysis"}) == "--set analysis: expected KEY=VALUE, e.g. material[steel].fy=250");
-    CHECK(error_of({"material.fy=2"}) == "--set material.fy: 'material' is not a table (a list: name one, e.g. material[1])");
+    CHECK(error_of({"material.fy=2"}) == "--set material.fy: 'material' is a list: name one, e.g. material[1].fy");
     // A value the key does not accept.
     CHECK_THAT(error_of({"section[ring].plasticity=zones"}), Catch::Contains("--set section[ring].plasticity: expected one of"));
 }
@@ -90,37 +94,6 @@ TEST_CASE("A run with --set equals the run of the edited file to the last digit"
 }
 
 namespace {
-
-// What a scene makes of its keys, bit for bit: the model's main values and two steps of its run.
-std::string fingerprint(Model m) {
-    std::ostringstream s;
-    s.precision(17);
-    s << m.name << '|' << m.title << '|' << m.nodes.size() << '|' << m.elements.size() << '|' << m.sections.size() << '|'
-      << m.supports.size() << '|' << m.loads.size() << '|' << m.springs.size() << '|' << m.stages.size() << '|'
-      << m.report.load_label << '|' << m.report.displacement_label << '|' << m.report.load_scale << '|'
-      << m.report.length_unit << m.report.force_unit << '|' << static_cast<int>(m.analysis.scheme) << '|'
-      << m.analysis.initial_increment << '|' << m.analysis.max_steps << '|' << m.analysis.residual_tolerance << '|'
-      << m.analysis.target_load_factor.value_or(-1) << '|' << m.analysis.target_displacement.value_or(-1) << '|';
-    for (const Node& n : m.nodes) s << n.x << ',' << n.y << ';';
-    s << m.analysis.max_iterations << '|' << m.analysis.min_increment << '|' << m.analysis.max_increment << '|'
-      << m.analysis.allow_crossing << '|' << m.analysis.displacement_tolerance << '|';
-    for (const SectionSpec& sec : m.sections) {
-        s << sec.name << ',' << sec.area << ',' << sec.inertia << ',' << sec.fibres.size() << ',' << sec.mass_per_length << ',';
-        if (sec.steel) {
-            s << sec.steel->fy << ',' << sec.steel->ultimate_strain << ',' << sec.steel->law;
-            for (const auto& [key, value] : sec.steel->parameters) s << ',' << key << '=' << value;
-        }
-        s << ';';
-    }
-    for (const NodalLoad& l : m.loads) s << l.node << ':' << l.value[0] << ',' << l.value[1] << ',' << l.value[2] << ';';
-    for (const FoundationSpring& f : m.springs) s << f.kx << ',' << f.ky << ',' << f.krot << ';';
-    m.analysis.max_steps = 2;
-    PathFollowing analysis(m);
-    analysis.run({[&](const StepResult& r) {
-        for (double u : r.displacement) s << u << ',';
-    }});
-    return s.str();
-}
 
 // Every leaf key of a TOML table as (path, value text), with list entries by 1-based index.
 void leaves(const toml::table& table, const std::string& prefix, std::vector<std::pair<std::string, std::string>>& out) {

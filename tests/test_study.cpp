@@ -2,6 +2,7 @@
 // error, convergence orders, and every stability case against its expected outcome.
 #include "curve_error.hpp"
 #include "curve_extrapolation.hpp"
+#include "scene_schema.hpp"
 #include "scene_variant.hpp"
 #include "robustness_cases.hpp"
 #include "stability_cases.hpp"
@@ -47,7 +48,7 @@ TEST_CASE("A scene variant changes one discretisation parameter and nothing else
     CHECK(small_steps.analysis.initial_increment == 0.25);
     CHECK(small_steps.analysis.max_steps >= 400);
     CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "fibres", 10), Catch::Contains("no 'fibres' to vary"));
-    CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "colour", 10), Catch::Contains("elements, fibres, integration_points, segments and increment"));
+    CHECK_THROWS_WITH(scene_variant(model("ring_elastic"), "colour", 10), Catch::Contains("fibres, integration_points, segments, elements and increment"));
 }
 
 TEST_CASE("The curve error is zero for the reference itself and measures a known offset", "[study]") {
@@ -329,4 +330,18 @@ TEST_CASE("A Monte Carlo sample is reproducible and follows its law", "[sweep]")
     for (const auto& row : sample_plan({parse_sample("k=lognormal:0:0.5")}, 200, 1).values) CHECK(std::stod(row[0]) > 0.0);
     CHECK_THROWS_WITH(parse_sample("k=gauss:1:2"), Catch::Contains("expected normal"));
     CHECK_THROWS_WITH(parse_sample("k=normal:1:-2"), Catch::Contains("σ must be positive"));
+}
+
+TEST_CASE("A study varies the keys the schema marks and names them when asked for another", "[scene][schema][study]") {
+    const std::vector<std::string> studied = studied_keys();
+    for (const char* key : {"elements", "fibres", "integration_points", "segments", "increment"})
+        CHECK(std::find(studied.begin(), studied.end(), key) != studied.end());
+    try {
+        scene_variant(std::string(PLASTICA_SOURCE_DIR) + "/models/ring_inelastic.toml", "radius", 2.0, "");
+        FAIL("varying a key the schema does not mark was accepted");
+    } catch (const StudyError& e) {
+        for (const std::string& key : studied) CHECK_THAT(e.what(), Catch::Contains(key));
+    }
+    const Model coarse = scene_variant(std::string(PLASTICA_SOURCE_DIR) + "/models/ring_inelastic.toml", "elements", 12.0, "");
+    CHECK(coarse.elements.size() == 12u);
 }

@@ -18,9 +18,17 @@ struct MaterialParameterError : std::invalid_argument {
     std::string key;
 };
 
+// A key of a law's own, with its range [min, max) and what it means (io/scene_schema.cpp
+// declares it under `[[material]]` for that law).
+struct LawParameter {
+    std::string name;
+    double min, max;
+    const char* doc;
+};
+
 struct MaterialLaw {
     const char* name;
-    std::vector<std::string> parameters; // keys of this law beyond E, fy and ultimate_strain
+    std::vector<LawParameter> parameters; // keys of this law beyond E, fy and ultimate_strain
     const char* description;
     // Throws MaterialParameterError for a parameter out of range.
     std::unique_ptr<UniaxialMaterial> (*make)(const SteelSpec& spec, double residual_stress);
