@@ -1,8 +1,8 @@
 #include "scene_reader.hpp"
 #include "member_geometry.hpp"
+#include "mesh_builder.hpp"
 #include "model_building.hpp"
 #include "section_shapes.hpp"
-#include "node_index.hpp"
 
 #include "toml_table_reader.hpp"
 
@@ -213,31 +213,14 @@ private:
         return it->second;
     }
 
-    // Adds a node, or returns the one already at that point (generators share their ends).
-    int add_node(double x, double y) {
-        if (const int k = node_index_.find(x, y, merge_tolerance(x, y)); k >= 0) return k;
-        model_.nodes.push_back({x, y});
-        const int index = static_cast<int>(model_.nodes.size()) - 1;
-        node_index_.add(x, y, index);
-        return index;
-    }
-    double merge_tolerance(double x, double y) const {
-        return 1e-9 * std::max({1.0, std::abs(x), std::abs(y), size_scale_});
-    }
-
-    void add_element(int a, int b, int section, TomlTableReader& r, const std::string& key) {
-        if (a == b) r.fail(key, "an element's two nodes coincide");
-        // The same member twice would double its stiffness without a word.
-        const auto pair = std::minmax(a, b);
-        if (!members_.insert({pair.first, pair.second}).second) {
-            std::ostringstream where;
-            where << "an element between " << describe_node(a) << " and " << describe_node(b)
-                  << " exists already (given twice, or two generators overlap)";
-            r.fail(key, where.str());
+    // A mesh step's refusal, located at the key that asked for it.
+    template <class Step>
+    auto meshed(TomlTableReader& r, const std::string& key, Step step) {
+        try {
+            return step();
+        } catch (const MeshError& e) {
+            r.fail(key, e.what());
         }
-        if (static_cast<int>(model_.elements.size()) >= max_elements)
-            r.fail(key, "more than " + std::to_string(max_elements) + " elements");
-        model_.elements.push_back({a, b, section});
     }
 
     void read_nodes(TomlTableReader& top) {
@@ -245,30 +228,9 @@ private:
         for (std::size_t i = 0; i < list.size(); ++i) {
             TomlTableReader r(*list[i].first, file_, indexed("node", i), scene_table("node"), units());
             const int id = r.integer("id");
-            if (node_ids_.count(id)) r.fail("id", "node id " + std::to_string(id) + " is used twice");
             const double x = r.number("x"), y = r.number("y");
-            if (const int k = node_index_.find(x, y, merge_tolerance(x, y)); k >= 0)
-                for (const auto& [other, index] : node_ids_)
-                    if (index == k) r.fail("id", "node " + std::to_string(id) + " lies on node " + std::to_string(other));
-            model_.nodes.push_back({x, y});
-            node_ids_[id] = static_cast<int>(model_.nodes.size()) - 1;
-            node_index_.add(x, y, node_ids_[id]);
+            meshed(r, "id", [&] { return mesh_.explicit_node(id, x, y); });
             r.finish();
-        }
-    }
-
-    // A generated member: its points become nodes (shared with other members where they meet)
-    // joined by elements, listed under the member's name.
-    void add_member(const std::string& name, const std::vector<Point>& points, int section, TomlTableReader& r) {
-        std::vector<int>& nodes = groups_[name];
-        int prev = add_node(points.front()[0], points.front()[1]);
-        nodes.push_back(prev);
-        for (std::size_t k = 1; k < points.size(); ++k) {
-            const int next = add_node(points[k][0], points[k][1]); // a full circle closes on its first node
-            add_element(prev, next, section, r, "elements");
-            member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
-            if (next != nodes.front()) nodes.push_back(next);
-            prev = next;
         }
     }
 
@@ -295,10 +257,9 @@ private:
             const int n = r.integer("elements");
             const int section = section_of(r);
             if (std::hypot(b[0] - a[0], b[1] - a[1]) <= 0.0) r.fail("end", "a line needs a positive length (start and end coincide)");
-            size_scale_ = std::max({size_scale_, std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])});
-            const int first = static_cast<int>(model_.elements.size());
-            add_member(name, line_points(a, b, n), section, r);
-            read_releases(r, first, static_cast<int>(model_.elements.size()) - 1);
+            mesh_.enlarge(std::max({std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])}));
+            const auto [first, last] = meshed(r, "elements", [&] { return mesh_.add_member(name, line_points(a, b, n), section); });
+            read_releases(r, first, last);
             r.finish();
         }
     }
@@ -316,18 +277,17 @@ private:
             const int section = section_of(r);
             if (std::abs(a1 - a0) <= 0.0 || std::abs(a1 - a0) > 360.0)
                 r.fail("end_angle", "expected an arc of more than 0 and at most 360 degrees");
-            size_scale_ = std::max({size_scale_, std::abs(c[0]) + R, std::abs(c[1]) + R});
-            const int first = static_cast<int>(model_.elements.size());
-            add_member(name, arc_points(c, R, a0, a1, n), section, r);
-            read_releases(r, first, static_cast<int>(model_.elements.size()) - 1);
+            mesh_.enlarge(std::max(std::abs(c[0]) + R, std::abs(c[1]) + R));
+            const auto [first, last] = meshed(r, "elements", [&] { return mesh_.add_member(name, arc_points(c, R, a0, a1, n), section); });
+            read_releases(r, first, last);
             r.finish();
         }
     }
 
     int node_by_id(TomlTableReader& r, const std::string& key, int64_t id) {
-        auto it = node_ids_.find(static_cast<int>(id));
-        if (it == node_ids_.end()) r.fail(key, "no [[node]] with id " + std::to_string(id));
-        return it->second;
+        const int* node = mesh_.node_of_id(static_cast<int>(id));
+        if (!node) r.fail(key, "no [[node]] with id " + std::to_string(id));
+        return *node;
     }
 
     void read_elements(TomlTableReader& top) {
@@ -339,7 +299,8 @@ private:
                 r.fail("nodes", "expected two node ids, e.g. nodes = [1, 2]");
             const int n0 = node_by_id(r, "nodes", *(*a)[0].value<int64_t>());
             const int n1 = node_by_id(r, "nodes", *(*a)[1].value<int64_t>());
-            add_element(n0, n1, section_of(r), r, "nodes");
+            const int section = section_of(r);
+            meshed(r, "nodes", [&] { mesh_.add_element(n0, n1, section); });
             const int added = static_cast<int>(model_.elements.size()) - 1;
             read_releases(r, added, added);
             r.finish();
@@ -370,10 +331,10 @@ private:
                     std::fill(taken.begin(), taken.end(), true);
                     continue;
                 }
-                auto g = member_elements_.find(name);
-                if (g == member_elements_.end()) {
+                auto g = mesh_.member_elements().find(name);
+                if (g == mesh_.member_elements().end()) {
                     std::string known;
-                    for (const auto& m : member_elements_) known += (known.empty() ? "'" : ", '") + m.first + "'";
+                    for (const auto& m : mesh_.member_elements()) known += (known.empty() ? "'" : ", '") + m.first + "'";
                     r.fail("on", "expected \"all\" or the name of a [[line]] or [[arc]], got '" + name + "'" +
                                      (known.empty() ? "" : "; the members: " + known));
                 }
@@ -389,16 +350,7 @@ private:
 
     void check_nodes(TomlTableReader& top) {
         if (model_.elements.empty()) top.fail("", "the scene has no elements ([[line]], [[arc]] or [[element]])");
-        std::vector<bool> used(model_.nodes.size(), false);
-        for (const ElementSpec& e : model_.elements) used[e.node_i] = used[e.node_j] = true;
-        for (const auto& [id, index] : node_ids_)
-            if (!used[index]) top.fail("node", "node " + std::to_string(id) + " belongs to no element");
-        double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-        for (const Node& n : model_.nodes) {
-            xmin = std::min(xmin, n.x); xmax = std::max(xmax, n.x);
-            ymin = std::min(ymin, n.y); ymax = std::max(ymax, n.y);
-        }
-        size_scale_ = std::max({size_scale_, xmax - xmin, ymax - ymin});
+        meshed(top, "node", [&] { mesh_.finish(); });
     }
 
     // A node named by 'node = id' or by 'at = [x, y]'.
@@ -410,7 +362,7 @@ private:
         return node_at(r, at_key, p);
     }
     int node_at(TomlTableReader& r, const std::string& key, const std::array<double, 2>& p) {
-        if (const int k = node_index_.find(p[0], p[1], 1e-6 * size_scale_); k >= 0) return k;
+        if (const int k = mesh_.node_near(p); k >= 0) return k;
         std::ostringstream s;
         s << "no node at [" << p[0] << ", " << p[1] << "]";
         r.fail(key, s.str());
@@ -511,8 +463,8 @@ private:
             if (on == "all") {
                 for (std::size_t e = 0; e < model_.elements.size(); ++e) elements.push_back(static_cast<int>(e));
             } else {
-                auto g = member_elements_.find(on);
-                if (g == member_elements_.end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
+                auto g = mesh_.member_elements().find(on);
+                if (g == mesh_.member_elements().end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
                 elements = g->second;
             }
             const double wx = r.number("wx"), wy = r.number("wy");
@@ -570,8 +522,8 @@ private:
                 if (on == "all") {
                     for (std::size_t k = 0; k < model_.nodes.size(); ++k) nodes.push_back(static_cast<int>(k));
                 } else {
-                    auto g = groups_.find(on);
-                    if (g == groups_.end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
+                    auto g = mesh_.member_nodes().find(on);
+                    if (g == mesh_.member_nodes().end()) r.fail("on", "expected 'all' or the name of a [[line]] or [[arc]], got '" + on + "'");
                     nodes = g->second;
                 }
             }
@@ -637,7 +589,7 @@ private:
                 if (same == model_.bases.end()) model_.bases.push_back(base);
                 std::string inside;
                 for (int n : nodes)
-                    if (base.gap(model_.nodes[n].x, model_.nodes[n].y, 0.0) < -1e-9 * size_scale_)
+                    if (base.gap(model_.nodes[n].x, model_.nodes[n].y, 0.0) < -1e-9 * mesh_.size_scale())
                         inside += (inside.empty() ? "" : ", ") + describe_node(n);
                 if (!inside.empty()) r.fail("base_point", "the structure already penetrates the base at " + inside);
             } else {
@@ -754,11 +706,7 @@ private:
                                       "\"'), so its loads would never act");
     }
 
-    std::string describe_node(int n) const {
-        std::ostringstream s;
-        s << "[" << model_.nodes[n].x << ", " << model_.nodes[n].y << "]";
-        return s.str();
-    }
+    std::string describe_node(int n) const { return mesh_.describe(n); }
 
     void read_analysis(TomlTableReader& top) {
         const toml::table* t = top.table("analysis");
@@ -885,7 +833,7 @@ private:
                             "with one transverse load at the other and nothing else; this scene is not one");
         if (model_.report.mirror_x) {
             // A half model lies on one side of its symmetry line.
-            const double x0 = *model_.report.mirror_x, tol = 1e-9 * size_scale_;
+            const double x0 = *model_.report.mirror_x, tol = 1e-9 * mesh_.size_scale();
             bool left = false, right = false;
             for (const Node& n : model_.nodes) left = left || n.x < x0 - tol, right = right || n.x > x0 + tol;
             if (left && right) r.fail("mirror_x", "the structure lies on both sides of this line: a half model lies on one side");
@@ -899,14 +847,9 @@ private:
     std::optional<UnitSystem> units_;
     std::map<std::string, Material> materials_;
     std::map<std::string, int> section_index_;
-    NodeIndex node_index_;
-    std::map<int, int> node_ids_;
-    std::map<std::string, std::vector<int>> groups_;          // nodes of each [[line]]/[[arc]]
-    std::map<std::string, std::vector<int>> member_elements_; // elements of each [[line]]/[[arc]]
+    MeshBuilder mesh_{model_, max_elements};
     std::vector<int> load_lines_; // of each [[load]], in order
     int nodal_loads_ = 0;                                     // [[load]]s, ahead of the lumped ones
-    std::set<std::pair<int, int>> members_; // node pairs with an element
-    double size_scale_ = 0.0;
 };
 
 } // namespace
