@@ -377,12 +377,13 @@ std::vector<StabilityCase> robustness_cases() {
                          }});
     }
     // Steel rings crushed between plates to 65 % of their diameter (fibre sections, hardening
-    // 1e-4·E): R/h 10, 20, 40 under load control of the plate's travel (as shipped) and under
-    // displacement control of the top; the plate force within 0.95–1.07 of DeRuntz & Hodge's
-    // crush load (4M_p/R)/√(1 − (δ/D)²) from δ = 0.2 D on (tests/test_crushing.cpp measures
-    // 0.962–1.059).
+    // 1e-4·E): R/h 10, 20, 40 under load control of the plate's travel (as shipped), under
+    // displacement control of the top and under arc length; the plate force within 0.95–1.07
+    // of DeRuntz & Hodge's crush load (4M_p/R)/√(1 − (δ/D)²) from δ = 0.2 D on
+    // (tests/test_crushing.cpp measures 0.962–1.059).
     for (const double r_over_h : {10.0, 20.0, 40.0})
-        for (const bool by_displacement : {false, true}) {
+        for (const char* scheme : {"load_control", "displacement_control", "arc_length"}) {
+            const bool by_displacement = std::string(scheme) == "displacement_control";
             const double h = 100.0 / r_over_h, k = 1e4 * 210000.0 * h * h * h / 12.0 / 1e6;
             std::vector<std::pair<std::string, std::string>> edits{{"h = 5.0", "h = " + std::to_string(h)},
                                                                    {"ky = \"21875 N/mm\"", "ky = " + std::to_string(k)},
@@ -390,9 +391,12 @@ std::vector<StabilityCase> robustness_cases() {
             if (by_displacement)
                 edits.insert(edits.end(), {{"scheme = \"load_control\"", "scheme = \"displacement_control\""},
                                            {"target_load_factor = 130.0", "target_displacement = 130.0"}});
+            else if (std::string(scheme) == "arc_length")
+                edits.push_back({"scheme = \"load_control\"", "scheme = \"arc_length\""});
             const double mp = 355.0 * h * h / 4.0;
+            const std::string how = by_displacement ? ", displacement control" : std::string(scheme) == "arc_length" ? ", arc length" : ", load control of the plate";
             cases.push_back({"steel ring crushed between plates, fibre sections",
-                             "R/h " + std::to_string(static_cast<int>(r_over_h)) + (by_displacement ? ", displacement control" : ", load control of the plate"),
+                             "R/h " + std::to_string(static_cast<int>(r_over_h)) + how,
                              edited(embedded_scene("gallery/steel_ring_crushed"), edits), done,
                              [mp](const Steps& steps, const RunSummary&) -> std::string {
                                  const double R = 100.0, D = 2.0 * R, P0 = 4.0 * mp / R;
@@ -408,14 +412,17 @@ std::vector<StabilityCase> robustness_cases() {
                              }});
         }
     // The flattening test: the steel ring pressed on until its walls meet (self-contact), under
-    // load control of the plate's travel (as shipped) and displacement control of the top.
-    for (const bool by_displacement : {false, true}) {
+    // load control of the plate's travel (as shipped), displacement control of the top and arc length.
+    for (const char* scheme : {"load_control", "displacement_control", "arc_length"}) {
+        const bool by_displacement = std::string(scheme) == "displacement_control";
         std::vector<std::pair<std::string, std::string>> edits;
         if (by_displacement)
             edits = {{"scheme = \"load_control\"", "scheme = \"displacement_control\""},
                      {"target_load_factor = 195.0", "target_displacement = 195.0"}};
+        else if (std::string(scheme) == "arc_length")
+            edits = {{"scheme = \"load_control\"", "scheme = \"arc_length\""}};
         cases.push_back({"steel pipe ring flattened until its walls meet",
-                         by_displacement ? "displacement control" : "load control of the plate",
+                         by_displacement ? "displacement control" : std::string(scheme) == "arc_length" ? "arc length" : "load control of the plate",
                          edited(embedded_scene("gallery/steel_pipe_flattened"), edits), done,
                          [](const Steps& steps, const RunSummary&) -> std::string {
                              // The plate's travel (load control) or the top's (displacement control).

@@ -100,7 +100,7 @@ double PathFollowing::path_parameter() const {
 }
 
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control, bool extrapolate,
-                                              const PathConstraint& constraint) {
+                                              const PathConstraint& constraint, std::optional<double> extrapolate_to) {
     const AnalysisSpec& a = stages_.current();
     StructureProblem problem(system_, u_, lambda_, ubar_, ubar_held_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
@@ -129,8 +129,8 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     IncrementGuess guess;
     const IncrementGuess* start = nullptr;
     PathPoint ahead;
-    if (extrapolate && extrapolating()) {
-        ahead = path_.at(path_parameter() + h);
+    if (extrapolate && constraint.starts_from_extrapolation() && path_.ready()) {
+        ahead = path_.at(extrapolate_to.value_or(path_parameter() + h));
         guess.dx = ahead.displacement - system_.gather(u_);
         guess.dlambda = constraint.extrapolated_load_change(h, ahead.load_factor - lambda_);
         start = &guess;
@@ -168,6 +168,20 @@ NewtonResult PathFollowing::attempt_step(double h, const RunControl& control, co
         summary.iterations += outcome.iterations;
         roll_back(u_saved, lambda_saved);
         outcome = attempt_increment(h, control, false, *constraint_);
+    }
+    // Where the load factor moves plates or prescribed displacements alone it measures no load,
+    // and the path rarely folds in it: an arc-length step that finds no point on its arc is
+    // taken under load control of the travel the path extrapolates to that arc length. Fibres
+    // yielding and unloading as λ swings within the corrector's iterations make it cycle
+    // (a crushed ring's walls); with λ held, the same step converges.
+    if (!outcome.converged() && constraint_->scheme() == Scheme::arc_length && !model_.has_forces(factors_.driven) &&
+        path_.traced_a_step() && !stages_.turned_back()) {
+        const double travel = path_.at(path_parameter() + h).load_factor - lambda_saved;
+        if (travel != 0.0) {
+            summary.iterations += outcome.iterations;
+            roll_back(u_saved, lambda_saved);
+            outcome = attempt_increment(travel, control, true, *make_path_constraint(Scheme::load_control), path_parameter() + h);
+        }
     }
     // A step past the stage's target that the scheme could not shorten beforehand is taken
     // again from where it started, under the control that lands on the target exactly (a step

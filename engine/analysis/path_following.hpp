@@ -79,7 +79,10 @@ private:
                               double lambda_saved, RunSummary& summary);
     // One increment under the given constraint (the stage's, or the one that lands on its
     // target); extrapolate: start from the path's quadratic extrapolation when there is one.
-    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, const PathConstraint& constraint);
+    // Starts from the path extrapolated to `extrapolate_to` (a value of the run's path parameter;
+    // default: h further) when asked and the path allows it.
+    NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, const PathConstraint& constraint,
+                                   std::optional<double> extrapolate_to = std::nullopt);
     // After a failed attempt of size step_h: back to the saved state, h the increment to try
     // next; the stop, where no smaller increment is left to try or none can help.
     std::optional<StopReason> after_failure(const NewtonResult& outcome, double step_h, const Eigen::VectorXd& u_saved,
