@@ -20,7 +20,7 @@ const std::vector<MaterialLaw>& material_laws() {
         {"kinematic_hardening",
          {{"hardening_ratio", 0.0, 1.0,
            "b = E_sh/E; fibre sections crushed far into the plastic range (a ring between plates) need some "
-           "hardening: with b = 1e-4 they reach 65 % of the diameter, perfectly plastic fibres stop at 20–40 %"}}, "bilinear with linear kinematic hardening (tangent b·E past yield, Bauschinger effect)",
+           "hardening: with b = 1e-4 they reach 65 % of the diameter, perfectly plastic fibres stop far earlier"}}, "bilinear with linear kinematic hardening (tangent b·E past yield, Bauschinger effect)",
          make<KinematicHardeningSteel>, false},
     };
     return laws;
