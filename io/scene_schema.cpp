@@ -33,11 +33,11 @@ std::string quoted_list(const std::vector<std::string>& values) {
     return out;
 }
 
-std::string range_text(const KeyRange& r, bool whole) {
+// " > 0", " ≥ 0", " 1–16", " in [0, 1)".
+std::string range_text(const KeyRange& r) {
     if (!r.bounded()) return "";
     const bool lo = std::isfinite(r.min), hi = std::isfinite(r.max);
-    if (lo && hi && !r.min_open && !r.max_open)
-        return whole ? " " + format_number(r.min) + "–" + format_number(r.max) : " " + format_number(r.min) + "–" + format_number(r.max);
+    if (lo && hi && !r.min_open && !r.max_open) return " " + format_number(r.min) + "–" + format_number(r.max);
     if (lo && hi)
         return std::string(" in ") + (r.min_open ? "(" : "[") + format_number(r.min) + ", " + format_number(r.max) + (r.max_open ? ")" : "]");
     if (lo) return std::string(r.min_open ? " > " : " ≥ ") + format_number(r.min);
@@ -54,8 +54,8 @@ std::string dimension_words(const KeySpec& k) {
 
 std::string KeySpec::type_description() const {
     switch (kind) {
-    case ValueKind::number: return "number" + range_text(range, false) + dimension_words(*this);
-    case ValueKind::integer: return "whole number" + range_text(range, true);
+    case ValueKind::number: return "number" + range_text(range) + dimension_words(*this);
+    case ValueKind::integer: return "whole number" + range_text(range);
     case ValueKind::boolean: return "true or false";
     case ValueKind::string: return "string";
     case ValueKind::choice: return quoted_list(choices) + (type_text.empty() ? "" : " " + type_text);
