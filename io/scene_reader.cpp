@@ -156,8 +156,8 @@ private:
             SectionSpec s = shape.build(r, {m->second.E, m->second.steel});
             if (r.has("plastic"))
                 r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
-            // Hinges by default for an inelastic material, unless its law hardens past the
-            // capacity that hinges hold.
+            // Hinges by default for an inelastic material, unless its law hardens: a plastic
+            // zone follows the hardening along the member, a hinge lumps it at the end.
             const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
             const std::string plasticity =
                 r.choice_or("plasticity", !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
@@ -193,9 +193,6 @@ private:
                     if (r.has(key)) r.fail(key, "only a section with plasticity = \"distributed\" has segments");
                 s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
             }
-            if (s.plasticity == Plasticity::hinges && hardens)
-                r.fail("plasticity", "refined plastic hinges hold the moment at the fully plastic capacity; material law '" +
-                                         m->second.steel->law + "' hardens past it: use plasticity = \"distributed\"");
             if (s.plasticity != Plasticity::none) s.steel = m->second.steel;
             else s.fibres.clear();
             s.name = name;

@@ -202,7 +202,9 @@ TableSpec material_table_spec() {
             .about("the fibres' law (with `fy`). `bilinear`: elastic–perfectly plastic, the CS-ASA paper's law. "
                    "`kinematic_hardening`: bilinear with linear kinematic hardening (OpenSees' Steel01): tangent b·E past yield, "
                    "an elastic range 2·fy wide that moves with the back stress (Bauschinger effect); its sections use "
-                   "`plasticity = \"distributed\"` by default, and hinges are refused (they hold the moment at the fully plastic capacity)"),
+                   "`plasticity = \"distributed\"` by default; with `plasticity = \"hinges\"` a hinge's capacity rows harden by b of its "
+                   "end's elastic stiffness, its moment rising past M_p(N) as it turns (steel rings crushed by plates: within 0.955–1.066 of "
+                   "DeRuntz & Hodge's crush load, tests/test_crushing.cpp)"),
         number("ultimate_strain").at_least(0.0).fallback(0.0)
             .about("εu; a fibre past it fails and carries nothing; 0 never fails; else it must exceed fy/E"),
         number("density", dimension::mass_density).at_least(0.0).fallback(0.0)

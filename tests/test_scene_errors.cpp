@@ -142,10 +142,6 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"law parameter out of range", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nlaw = \"kinematic_hardening\"\nhardening_ratio = 1.0"), "'material[1].hardening_ratio': expected a number in [0, 1), got 1", 8},
         {"parameter of another law", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nhardening_ratio = 0.01"), "'material[1].hardening_ratio': a key of law = \"kinematic_hardening\", not of law = \"bilinear\"", 7},
         {"law without fy", replaced("E = 1000.0", "E = 1000.0\nlaw = \"bilinear\""), "a material law needs a yield stress 'fy'", 6},
-        {"hinges on a hardening law", [] {
-             std::string t = replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nlaw = \"kinematic_hardening\"\nhardening_ratio = 0.01");
-             return t.replace(t.find("I = 1.0"), 7, "I = 1.0\nplasticity = \"hinges\"");
-         }(), "refined plastic hinges hold the moment at the fully plastic capacity", 14},
         {"bad ultimate strain", replaced("E = 1000.0", "E = 1000.0\nfy = 1.0\nultimate_strain = 0.0001"), "expected 0 (never fails) or a strain above fy/E", 7},
         {"a moving base on a bilateral foundation", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_motion = [0.0, -1.0]\n", "'foundation[1].base_motion': a base line belongs to a unilateral foundation", 29},
         {"bilateral foundation with a base", good + "[[foundation]]\non = \"all\"\nky = 1.0\nbase_point = [0.0, 0.0]\n", "a base line belongs to a unilateral foundation", 29},

@@ -25,6 +25,9 @@ PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnd
       k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)), f_elastic_(k_elastic_.inverse()),
       moment_scale_(sections_[0].moment_capacity(0.0, 1.0)),
       capacity_at_{ends_served.capacity[0] > 0, ends_served.capacity[1] > 0}, ends_served_(ends_served) {
+    if (section.steel)
+        if (const auto b = section.steel->parameters.find("hardening_ratio"); b != section.steel->parameters.end())
+            row_hardening_ = std::max(regularising_hardening, b->second);
     rows_.assign(row_count, YieldRow{});
     for (YieldRow& r : rows_) r.limit = no_limit;
     const FibreSection& s = sections_[0];
@@ -32,7 +35,7 @@ PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnd
     rows_[compression].a = Eigen::Vector3d(-1.0 / s.axial_capacity_compression(), 0.0, 0.0);
     for (Row r : {tension, compression}) {
         rows_[r].limit = 1.0;
-        rows_[r].hardening = regularising_hardening * rows_[r].a.dot(k_elastic_ * rows_[r].a);
+        rows_[r].hardening = row_hardening_ * rows_[r].a.dot(k_elastic_ * rows_[r].a);
     }
 }
 
@@ -74,7 +77,7 @@ void PlasticHingeLaw::linearise_capacity(double N) {
         row.a[0] = -v.slope / moment_scale_;
         row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
         row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[r];
-        row.hardening = regularising_hardening / ends_served_.capacity[end] * row.a.dot(k_elastic_ * row.a);
+        row.hardening = row_hardening_ / ends_served_.capacity[end] * row.a.dot(k_elastic_ * row.a);
     }
 }
 

@@ -32,8 +32,8 @@ struct MaterialLaw {
     const char* description;
     // Throws MaterialParameterError for a parameter out of range.
     std::unique_ptr<UniaxialMaterial> (*make)(const SteelSpec& spec, double residual_stress);
-    // Whether the moment of its sections stops at the fully plastic capacity (refined plastic
-    // hinges model nothing else).
+    // Whether the moment of its sections stops at the fully plastic capacity (its sections then
+    // default to refined plastic hinges, else to a plastic zone).
     bool perfectly_plastic;
 };
 
