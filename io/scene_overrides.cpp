@@ -62,8 +62,6 @@ toml::table parse_value(const Override& o) {
     }
 }
 
-// Applies one override to the parsed scene; returns the path as the reader names it
-// (tables of an array by their index from 1), to recognise the reader's errors.
 // A path is TABLE.KEY or TABLE[index or name].KEY of a table and key the scene schema declares.
 void check_against_schema(const Override& o, const std::vector<Segment>& segments) {
     const auto suggestion = [](const std::string& name, const std::vector<std::string>& known) {
@@ -80,6 +78,8 @@ void check_against_schema(const Override& o, const std::vector<Segment>& segment
         fail(o, table->heading() + " has no key '" + segments.back().key + "'" + suggestion(segments.back().key, table->all_key_names()));
 }
 
+// Applies one override to the parsed scene; returns the path as the reader names it
+// (tables of an array by their index from 1), to recognise the reader's errors.
 std::string apply(toml::table& root, const Override& o) {
     const std::vector<Segment> segments = split(o);
     check_against_schema(o, segments);

@@ -74,61 +74,42 @@ std::string KeySpec::default_description() const {
     return "none";
 }
 
-KeySpec number(std::string name, Dimension d) {
+namespace {
+
+KeySpec key_of(std::string name, ValueKind kind) {
     KeySpec k;
     k.name = std::move(name);
-    k.kind = ValueKind::number;
+    k.kind = kind;
+    return k;
+}
+
+} // namespace
+
+KeySpec number(std::string name, Dimension d) {
+    KeySpec k = key_of(std::move(name), ValueKind::number);
     k.dimension = d;
     return k;
 }
 
-KeySpec whole(std::string name, int min, int max) {
-    KeySpec k;
-    k.name = std::move(name);
-    k.kind = ValueKind::integer;
-    k.range.min = min;
-    k.range.max = max;
-    return k;
-}
+KeySpec whole(std::string name, int min, int max) { return key_of(std::move(name), ValueKind::integer).between(min, max); }
 
-KeySpec flag(std::string name, bool fallback) {
-    KeySpec k;
-    k.name = std::move(name);
-    k.kind = ValueKind::boolean;
-    k.fixed_default = fallback;
-    return k;
-}
+KeySpec flag(std::string name, bool fallback) { return key_of(std::move(name), ValueKind::boolean).fallback(fallback); }
 
-KeySpec text(std::string name) {
-    KeySpec k;
-    k.name = std::move(name);
-    k.kind = ValueKind::string;
-    return k;
-}
+KeySpec text(std::string name) { return key_of(std::move(name), ValueKind::string); }
 
 KeySpec one_of(std::string name, std::vector<std::string> choices) {
-    KeySpec k;
-    k.name = std::move(name);
-    k.kind = ValueKind::choice;
+    KeySpec k = key_of(std::move(name), ValueKind::choice);
     k.choices = std::move(choices);
     return k;
 }
 
 KeySpec point(std::string name, Dimension d) {
-    KeySpec k;
-    k.name = std::move(name);
-    k.kind = ValueKind::point;
+    KeySpec k = key_of(std::move(name), ValueKind::point);
     k.dimension = d;
     return k;
 }
 
-KeySpec other(std::string name, std::string type_text) {
-    KeySpec k;
-    k.name = std::move(name);
-    k.kind = ValueKind::other;
-    k.type_text = std::move(type_text);
-    return k;
-}
+KeySpec other(std::string name, std::string type_text) { return key_of(std::move(name), ValueKind::other).or_also(std::move(type_text)); }
 
 const KeySpec* TableSpec::find(const std::string& key, const std::string& chosen) const {
     for (const KeySpec& k : keys)

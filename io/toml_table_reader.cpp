@@ -137,10 +137,6 @@ double TomlTableReader::number(const std::string& key, Dimension d) {
     missing(k, "a number");
 }
 
-std::optional<double> TomlTableReader::optional_number(const std::string& key) {
-    return optional_number(key, declared(key).dimension);
-}
-
 std::optional<double> TomlTableReader::optional_number(const std::string& key, Dimension d) {
     const KeySpec& k = declared(key);
     if (has(key)) return checked_number(k, d);

@@ -31,7 +31,6 @@ public:
     int line() const { return line_; }
     const std::string& file() const { return file_; }
     std::string qualified(const std::string& key) const;
-    const TableSpec& spec() const { return spec_; }
 
     // The value of the table's group key ("shape", "law") selects its further keys; a key of
     // another group is refused here, naming its group.
@@ -41,8 +40,6 @@ public:
     // declared default, or an error if it is required. `d` where other keys set the dimension.
     double number(const std::string& key);
     double number(const std::string& key, Dimension d);
-    std::optional<double> optional_number(const std::string& key);
-    std::optional<double> optional_number(const std::string& key, Dimension d);
     // Left out: `fallback`, a default that follows from other keys.
     double number_or(const std::string& key, double fallback);
     double number_or(const std::string& key, double fallback, Dimension d);
@@ -73,6 +70,7 @@ private:
     // The value of a number node or a "value unit" string; nullopt for anything else.
     std::optional<double> value_of(const toml::node& n, const std::string& key, Dimension d) const;
     double checked_number(const KeySpec& k, Dimension d);
+    std::optional<double> optional_number(const std::string& key, Dimension d); // nullopt when left out
     [[noreturn]] void missing(const KeySpec& k, const char* what) const;
 
     const toml::table& table_;

@@ -1,5 +1,7 @@
 #include "element/plastic_hinge_law.hpp"
 
+#include "material/material_registry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,9 +27,7 @@ PlasticHingeLaw::PlasticHingeLaw(const SectionSpec& section, double L0, HingeEnd
       k_elastic_(elastic_basic_stiffness(EA_, EI_, L0_)), f_elastic_(k_elastic_.inverse()),
       moment_scale_(sections_[0].moment_capacity(0.0, 1.0)),
       capacity_at_{ends_served.capacity[0] > 0, ends_served.capacity[1] > 0}, ends_served_(ends_served) {
-    if (section.steel)
-        if (const auto b = section.steel->parameters.find("hardening_ratio"); b != section.steel->parameters.end())
-            row_hardening_ = std::max(regularising_hardening, b->second);
+    if (section.steel) row_hardening_ = std::max(regularising_hardening, hardening_ratio(*section.steel));
     rows_.assign(row_count, YieldRow{});
     for (YieldRow& r : rows_) r.limit = no_limit;
     const FibreSection& s = sections_[0];

@@ -33,10 +33,6 @@ namespace plastica {
 class PlasticHingeLaw final : public TrialTangentLaw {
 public:
     static constexpr double regularising_hardening = 1e-6;
-    // The rows' hardening relative to the end's elastic stiffness: the material's hardening
-    // ratio b where its law hardens (the moment rises past M_p(N) as the hinge turns), else
-    // the regularising one.
-    double row_hardening_ = regularising_hardening;
 
     // ends_served: for each end, how many element ends its capacity rows and its pseudo-spring
     // stand for (analysis/hinge_allocation.hpp): 0, none; 1, its own; 2, its own and the other
@@ -114,6 +110,10 @@ private:
     double curvature_t_ = 0.0; // Σγ·(−M_p″)/M_p of active capacity rows
     bool frozen_ = false;
     bool unloading_predictor_ = false; // until the next commit
+    // The rows' hardening relative to the end's elastic stiffness: the material's hardening
+    // ratio b where its law hardens (the moment rises past M_p(N) as the hinge turns), else
+    // the regularising one.
+    double row_hardening_ = regularising_hardening;
     bool consistent_ = true;
 };
 

@@ -8,8 +8,7 @@ namespace plastica {
 
 KinematicHardeningSteel::KinematicHardeningSteel(const SteelSpec& spec, double residual_stress)
     : E_(spec.E), fy_(spec.fy), eu_(spec.ultimate_strain), eps_residual_(residual_stress / spec.E) {
-    const auto b = spec.parameters.find("hardening_ratio");
-    const double ratio = b == spec.parameters.end() ? 0.0 : b->second;
+    const double ratio = hardening_ratio(spec);
     if (!(ratio >= 0.0 && ratio < 1.0)) throw MaterialParameterError("hardening_ratio", "expected a ratio b = Esh/E in [0, 1)");
     H_ = ratio * E_ / (1.0 - ratio);
     set_trial_strain(0.0);

@@ -26,6 +26,11 @@ const std::vector<MaterialLaw>& material_laws() {
     return laws;
 }
 
+double hardening_ratio(const SteelSpec& spec) {
+    const auto b = spec.parameters.find("hardening_ratio");
+    return b == spec.parameters.end() ? 0.0 : b->second;
+}
+
 const MaterialLaw* find_material_law(const std::string& name) {
     for (const MaterialLaw& law : material_laws())
         if (name == law.name) return &law;

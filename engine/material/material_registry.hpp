@@ -38,6 +38,8 @@ struct MaterialLaw {
 };
 
 const std::vector<MaterialLaw>& material_laws();
+// The ratio b = E_sh/E of a linearly hardening law (its `hardening_ratio`); 0 for a law without.
+double hardening_ratio(const SteelSpec& spec);
 // Null for an unknown name.
 const MaterialLaw* find_material_law(const std::string& name);
 // The fibre of a section: residual_stress is its initial stress.
