@@ -4,6 +4,12 @@
 #include "options.hpp"
 #include "render_stage.hpp"
 
+#include "output_folder.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
 namespace plastica::cli {
 
 int render_command(const Args& args) {
@@ -24,7 +30,24 @@ int render_command(const Args& args) {
     if (vm.count("output")) render_options.output = vm["output"].as<std::string>();
     render_options.every = vm["every"].as<int>();
     render_options.quiet = vm.count("quiet") > 0;
-    return render_and_report(vm["series"].as<std::string>(), render_options);
+    const std::string series = vm["series"].as<std::string>();
+    namespace fs = std::filesystem;
+    const std::string folder = !render_options.output.empty() ? render_options.output
+                               : fs::is_directory(series)         ? series
+                                                                  : fs::path(series).parent_path().string();
+    // The pictures' folder is this drawing's own while it draws: a run or another drawing into
+    // it is refused, and links where pictures go are too.
+    std::optional<OutputFolder> lock;
+    try {
+        OutputFolderOptions o;
+        o.clear_results = false;
+        o.holder = "plastica render " + series;
+        lock.emplace(folder.empty() ? std::string(".") : folder, std::move(o));
+    } catch (const OutputFolderError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    }
+    return render_and_report(series, render_options);
 }
 
 } // namespace plastica::cli

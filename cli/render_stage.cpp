@@ -1,13 +1,24 @@
 #include "render_stage.hpp"
 
 #include "progress.hpp"
+#include "interruption.hpp"
 #include "render_error.hpp"
 
+#include "atomic_file.hpp"
+#include "output_folder.hpp"
+
+#include <filesystem>
 #include <iostream>
 
 namespace plastica::cli {
 
 int render_and_report(const std::string& series, const render::RenderOptions& options, std::vector<std::string>* notes) {
+    // SIGINT and SIGTERM stop the drawing between frames; its temporary files go with it.
+    const render::StopOnSignal stop_on_signal;
+    namespace fs = std::filesystem;
+    const std::string output = !options.output.empty() ? options.output
+                               : fs::is_directory(series)  ? series
+                                                           : fs::path(series).parent_path().string();
     try {
         render::RenderOptions with_progress = options;
         Progress progress("drawing", 25);
@@ -25,6 +36,14 @@ int render_and_report(const std::string& series, const render::RenderOptions& op
                       << r.gl_renderer << ") into " << r.output << "/frames\n";
             std::cerr << r.output << "/chart.png, " << r.output << "/contact_sheet.png; " << r.animation << "\n";
         }
+    } catch (const render::RenderInterrupted&) {
+        // The caller holds the folder's lock: what a killed worker left is this drawing's.
+        if (std::filesystem::is_directory(output)) remove_stale_temporaries(output);
+        std::cerr << "plastica: drawing interrupted; the frames drawn so far are kept\n";
+        return interrupted;
+    } catch (const WriteError& e) {
+        std::cerr << "plastica: cannot write the pictures: " << e.what() << "\n";
+        return stopped_early;
     } catch (const render::RenderError& e) {
         std::cerr << "plastica: cannot render: " << e.what() << "\n";
         return bad_input;

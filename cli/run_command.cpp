@@ -4,12 +4,14 @@
 #include "commands.hpp"
 #include "drawing_program.hpp"
 #include "options.hpp"
+#include "default_folder.hpp"
 #include "output_folder.hpp"
 #include "progress.hpp"
 #include "render_stage.hpp"
 
 #include "analysis/path_following.hpp"
 #include "curve_writer.hpp"
+#include "model_building.hpp"
 #include "run_report.hpp"
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
@@ -123,6 +125,14 @@ int run_command(const Args& args) {
     // The lean plastica has no drawing linked in: a run that draws is plastica-draw's, whole.
     const bool draws = !vm.count("no-render") && !vm.count("curves-only");
     if (draws && !can_draw()) return hand_over_to_drawing("run", args);
+    // Set-up beyond this machine's memory is refused before it starts; a long one is announced.
+    if (const std::optional<std::string> why = setup_too_large(model)) {
+        std::cerr << "plastica: " << scene_file << ": " << *why << "\n";
+        return bad_input;
+    }
+    if (fibre_states(model) > 1e6 && !vm.count("quiet"))
+        std::cerr << "plastica: setting up " << fibre_states(model) << " fibre states (about "
+                  << std::lround(fibre_states(model) * bytes_per_fibre_state / 1e6) << " MB)...\n";
     std::optional<PathFollowing> analysis;
     try {
         analysis.emplace(model);
@@ -136,8 +146,19 @@ int run_command(const Args& args) {
         return stopped_early;
     }
     const std::string folder = vm.count("output") ? vm["output"].as<std::string>() : default_output_folder(model.name);
+    // The folder is this run's own until it ends: a second writer is refused, and a rerun
+    // removes only what an earlier run wrote, never this run's inputs.
+    std::optional<OutputFolder> output_folder;
     try {
-        prepare_output_folder(folder, model.name, vm.count("force") > 0, !vm.count("curves-only"));
+        OutputFolderOptions o;
+        o.scene_name = model.name;
+        o.force = vm.count("force") > 0;
+        o.keep_step_files = !vm.count("curves-only");
+        o.inputs = render_options.overlays;
+        o.inputs.insert(o.inputs.end(), render_options.reference_points.begin(), render_options.reference_points.end());
+        o.inputs.push_back(scene_file);
+        o.holder = "plastica run " + scene_file;
+        output_folder.emplace(folder, std::move(o));
     } catch (const std::exception& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;
@@ -192,6 +213,7 @@ int run_command(const Args& args) {
     double output_seconds = 0.0; // inside the writers, for run.json's split of the time
     auto write_step = [&](const StepResult& r) {
         const AddsElapsed timing(output_seconds);
+        if (!output_folder->still_there()) throw std::runtime_error("the output folder " + folder + " was removed or replaced during the run");
         curve(r);
         if (series) try {
                 (*series)(r);
@@ -245,7 +267,22 @@ int run_command(const Args& args) {
     if (draws && report.summary.steps > 0) {
         render_options.quiet = quiet;
         const auto t2 = std::chrono::steady_clock::now();
-        if (const int code = render_and_report(folder, render_options, &report.drawing_notes); code != ok) return code;
+        if (const int code = render_and_report(folder, render_options, &report.drawing_notes); code != ok) {
+            // run.json says why the pictures are not all there: an interruption, or output that
+            // could not be written (a full disk: exit 3, never "bad input").
+            report.drawing_notes.push_back(code == interrupted ? "drawing interrupted: the frames drawn so far are kept"
+                                                               : "drawing stopped: the pictures could not all be written");
+            if (code == stopped_early && report.summary.status == RunStatus::completed) {
+                report.summary.status = RunStatus::output_failed;
+                report.summary.reason = "the analysis completed, but its pictures could not all be written";
+            }
+            try {
+                write_run_report((fs::path(folder) / "run.json").string(), report);
+            } catch (const std::exception& e) {
+                std::cerr << "plastica: " << e.what() << "\n";
+            }
+            return code;
+        }
         report.stage_seconds.emplace_back("drawing", seconds_since(t2));
         try {
             write_run_report((fs::path(folder) / "run.json").string(), report);

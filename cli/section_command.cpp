@@ -3,7 +3,11 @@
 // carries the path of the most loaded element end when the scene's results are at hand.
 #include "commands.hpp"
 #include "options.hpp"
+#include "default_folder.hpp"
+
+#include "atomic_file.hpp"
 #include "output_folder.hpp"
+#include "safe_names.hpp"
 
 #include "png_file.hpp"
 #include "render_error.hpp"
@@ -18,6 +22,8 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <set>
+#include <sstream>
 
 namespace plastica::cli {
 
@@ -50,7 +56,17 @@ int section_command(const Args& args) {
     namespace fs = std::filesystem;
     const fs::path folder = vm.count("output") ? fs::path(vm["output"].as<std::string>())
                                                : fs::path(default_output_folder(model.name)) / "sections";
-    fs::create_directories(folder);
+    // The folder is this command's own while it writes (a lock; no links where files go).
+    std::optional<OutputFolder> lock;
+    try {
+        OutputFolderOptions o;
+        o.clear_results = false;
+        o.holder = "plastica section " + vm["scene"].as<std::string>();
+        lock.emplace(folder.string(), std::move(o));
+    } catch (const OutputFolderError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    }
     // The results of this scene, when they are at hand, give the N-M chart its load path.
     std::optional<render::ResultSeries> series;
     const std::string results = vm.count("series") ? vm["series"].as<std::string>() : default_output_folder(model.name);
@@ -61,17 +77,26 @@ int section_command(const Args& args) {
         return bad_input;
     }
     int written = 0;
+    std::set<std::string> stems;
     for (const SectionSpec& spec : model.sections) {
         if (vm.count("section") && spec.name != vm["section"].as<std::string>()) continue;
         if (!spec.steel) continue;
         const FibreSection section(spec);
         const std::vector<CapacityRow> capacity = capacity_table(section, points);
         const std::vector<MomentCurvatureCurve> curvature = moment_curvature_family(section, {0.0, 0.2, 0.4, 0.6, 0.8}, 10.0, points - 1);
-        {
-            std::ofstream out(folder / (spec.name + "_capacity.csv"));
+        // A section's name is the user's text: its files take a safe stem of it, inside the folder.
+        std::string stem = file_stem_for(spec.name);
+        // Two names of one stem ("HEB 200", "HEB_200") keep files of their own.
+        for (int k = 2; !stems.insert(stem).second; ++k) stem = file_stem_for(spec.name) + "_" + std::to_string(k);
+        try {
+            std::ostringstream out, curves;
             write_capacity_csv(out, capacity);
-            std::ofstream curves(folder / (spec.name + "_moment_curvature.csv"));
             write_moment_curvature_csv(curves, curvature);
+            write_file_atomically((folder / (stem + "_capacity.csv")).string(), out.str());
+            write_file_atomically((folder / (stem + "_moment_curvature.csv")).string(), curves.str());
+        } catch (const WriteError& e) {
+            std::cerr << "plastica: " << e.what() << "\n";
+            return stopped_early;
         }
         if (!vm.count("no-charts")) {
             try {
@@ -79,16 +104,16 @@ int section_command(const Args& args) {
                 if (series) path = render::most_loaded_end(*series);
                 const render::SectionUnits units{model.report.length_unit, model.report.force_unit};
                 render::write_png(render::draw_chart(render::capacity_chart(spec.name, capacity, units, path)),
-                                  (folder / (spec.name + "_capacity.png")).string());
+                                  (folder / (stem + "_capacity.png")).string());
                 render::write_png(render::draw_chart(render::moment_curvature_chart(spec.name, curvature, units)),
-                                  (folder / (spec.name + "_moment_curvature.png")).string());
+                                  (folder / (stem + "_moment_curvature.png")).string());
             } catch (const render::RenderError& e) {
                 std::cerr << "plastica: cannot draw the section charts: " << e.what() << "\n";
                 return bad_input;
             }
         }
         std::cout << spec.name << ": Ny = " << section.axial_capacity_tension() << ", Mp(0) = " << section.moment_capacity(0.0, 1.0)
-                  << ", My(0) = " << section.first_yield_moment(0.0) << "  -> " << (folder / spec.name).string()
+                  << ", My(0) = " << section.first_yield_moment(0.0) << "  -> " << (folder / stem).string()
                   << "_{capacity,moment_curvature}.csv\n";
         ++written;
     }

@@ -2,7 +2,7 @@
 // increments, optionally for two ways of modelling plasticity; study.csv, a table on stdout and study.png.
 #include "commands.hpp"
 #include "options.hpp"
-#include "output_folder.hpp"
+#include "default_folder.hpp"
 
 #include "png_file.hpp"
 #include "render_error.hpp"

@@ -3,7 +3,10 @@
 // as jobs for GNU Parallel and a Slurm array; plastica merge: sweep.csv from whatever runs exist.
 #include "commands.hpp"
 #include "options.hpp"
-#include "output_folder.hpp"
+#include "default_folder.hpp"
+
+#include "atomic_file.hpp"
+#include "safe_names.hpp"
 
 #include "scene_error.hpp"
 #include "scene_overrides.hpp"
@@ -92,7 +95,8 @@ void draw_charts(const std::string& dir, const std::string& scene_file, bool sam
     // Names and labels from the scene (given, or as the runs recorded it).
     std::string file = scene_file;
     for (const SweepRunResult& r : results)
-        if (file.empty() && r.finished) file = r.scene_file;
+        // A recorded name from a folder of elsewhere is read only as a scene (a .toml file).
+        if (file.empty() && r.finished && fs::path(r.scene_file).extension() == ".toml") file = r.scene_file;
     charts.scene = "sweep";
     try {
         const Model model = read_scene(file);
@@ -172,6 +176,8 @@ int sweep_command(const Args& args) {
         // Absolute: jobs.txt and the Slurm script may run from any directory.
         dir = fs::absolute(vm.count("output") ? fs::path(vm["output"].as<std::string>())
                                               : fs::path(default_output_folder(model.name)) / "sweep").lexically_normal().string();
+        // Every run's folder and log is named in jobs.txt and in a Slurm script: one line each.
+        if (has_control_character(dir)) throw StudyError("the output folder may not hold a newline or another control character");
         at = displacements(vm);
         if (vm.count("sample")) {
             if (vm.count("vary")) throw StudyError("give --vary (a grid) or --sample (Monte Carlo), not both");
@@ -199,32 +205,39 @@ int sweep_command(const Args& args) {
         std::cerr << "plastica: " << vm["scene"].as<std::string>() << ": " << e.what() << "\n";
         return bad_input;
     }
-    // A folder with another plan is not mixed into this one.
-    if (fs::exists(fs::path(dir) / "plan.csv")) {
-        const SweepPlan old = read_plan(dir);
-        if (old.keys != plan.keys || old.values != plan.values) {
+    try {
+        // A folder with another plan is not mixed into this one.
+        const SweepPlan earlier = fs::exists(fs::path(dir) / "plan.csv") ? read_plan(dir) : plan;
+        if (earlier.keys != plan.keys || earlier.values != plan.values) {
             std::cerr << "plastica: " << dir << " holds another sweep (plan.csv differs); choose another folder with -o\n";
             return bad_input;
         }
-    }
-    write_plan(dir, plan);
-    if (vm.count("sample")) {
-        std::ofstream laws(fs::path(dir) / "sample.txt");
-        for (const std::string& t : vm["sample"].as<std::vector<std::string>>()) laws << "--sample " << t << "\n";
-        laws << "--samples " << vm["samples"].as<int>() << "\n--seed " << vm["seed"].as<std::uint64_t>() << "\n";
-    }
-    fs::create_directories(fs::path(dir) / "logs");
-    if (vm.count("emit")) {
-        if (vm["emit"].as<std::string>() != "jobs") {
-            std::cerr << "plastica: --emit takes 'jobs'\n";
-            return bad_input;
+        write_plan(dir, plan);
+        if (vm.count("sample")) {
+            std::ostringstream laws;
+            for (const std::string& t : vm["sample"].as<std::vector<std::string>>()) laws << "--sample " << t << "\n";
+            laws << "--samples " << vm["samples"].as<int>() << "\n--seed " << vm["seed"].as<std::uint64_t>() << "\n";
+            write_file_atomically((fs::path(dir) / "sample.txt").string(), laws.str());
         }
-        write_jobs(dir, self(), scene, plan, output);
-        std::cout << dir << "/jobs.txt: " << plan.ids.size() << " runs. Run them with GNU Parallel:\n"
-                  << "  parallel --joblog " << dir << "/joblog < " << dir << "/jobs.txt\n"
-                  << "or as a Slurm array: sbatch " << dir << "/sweep.sbatch\n"
-                  << "then: plastica merge " << dir << "\n";
-        return ok;
+        fs::create_directories(fs::path(dir) / "logs");
+        if (vm.count("emit")) {
+            if (vm["emit"].as<std::string>() != "jobs") {
+                std::cerr << "plastica: --emit takes 'jobs'\n";
+                return bad_input;
+            }
+            write_jobs(dir, self(), scene, plan, output);
+            std::cout << dir << "/jobs.txt: " << plan.ids.size() << " runs. Run them with GNU Parallel:\n"
+                      << "  parallel --joblog " << dir << "/joblog < " << dir << "/jobs.txt\n"
+                      << "or as a Slurm array: sbatch " << dir << "/sweep.sbatch\n"
+                      << "then: plastica merge " << dir << "\n";
+            return ok;
+        }
+    } catch (const StudyError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    } catch (const std::exception& e) {
+        std::cerr << "plastica: cannot write the sweep's files in " << dir << ": " << e.what() << "\n";
+        return stopped_early;
     }
     // The pool: up to --jobs runs at a time; a finished run (an earlier, interrupted sweep) is
     // not run again.
@@ -275,6 +288,10 @@ int merge_command(const Args& args) {
         return code;
     } catch (const StudyError& e) {
         std::cerr << "plastica: " << e.what() << "\n";
+        return bad_input;
+    } catch (const std::exception& e) {
+        // A folder of elsewhere: a file too large, behind a link, or unreadable.
+        std::cerr << "plastica: " << vm["folder"].as<std::string>() << ": " << e.what() << "\n";
         return bad_input;
     }
 }

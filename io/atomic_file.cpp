@@ -18,7 +18,7 @@ std::string temporary_name(const std::string& path) {
 void rename_into_place(const std::string& temporary, const std::string& path) {
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
-    if (ec) throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
+    if (ec) throw WriteError("cannot rename " + temporary + " to " + path + ": " + ec.message());
 }
 
 namespace {
@@ -29,7 +29,7 @@ void write_everything(std::size_t size, const std::string& path, WriteSome write
     while (done < size) {
         const ssize_t n = write_some(done);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(n < 0 ? errno : EIO));
+        if (n <= 0) throw WriteError("cannot write " + path + ": " + std::strerror(n < 0 ? errno : EIO));
         done += static_cast<std::size_t>(n);
     }
 }
@@ -50,7 +50,9 @@ namespace {
 // An open file descriptor, closed once (another thread may reuse its number after that).
 class Descriptor {
 public:
-    Descriptor(const std::string& path, int flags) : path_(path), fd_(::open(path.c_str(), flags | O_WRONLY | O_CLOEXEC, 0644)) {
+    // Never through a symbolic link: a link planted in an output folder must not carry a write out of it.
+    Descriptor(const std::string& path, int flags)
+        : path_(path), fd_(::open(path.c_str(), flags | O_WRONLY | O_CLOEXEC | O_NOFOLLOW, 0644)) {
         if (fd_ < 0) fail();
     }
     ~Descriptor() {
@@ -64,7 +66,7 @@ public:
         fd_ = -1;
         if (::close(fd) != 0) fail();
     }
-    [[noreturn]] void fail() const { throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno)); }
+    [[noreturn]] void fail() const { throw WriteError("cannot write " + path_ + ": " + std::strerror(errno)); }
 
 private:
     std::string path_;
@@ -76,7 +78,8 @@ private:
 void write_file_atomically(const std::string& path, const std::string& contents) {
     const std::string tmp = temporary_name(path);
     try {
-        Descriptor file(tmp, O_CREAT | O_TRUNC);
+        ::unlink(tmp.c_str()); // a leftover of a killed writer of this process id, or a planted link
+        Descriptor file(tmp, O_CREAT | O_EXCL);
         write_all(file.get(), contents.data(), contents.size(), path);
         file.close();
         rename_into_place(tmp, path);

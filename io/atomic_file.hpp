@@ -2,11 +2,19 @@
 // sees a half-written file under its final name.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 
 namespace plastica {
 
-// Throws std::runtime_error naming the path and the reason (a full disk: "No space left on
+// A file could not be written (a full disk, a removed folder, a refused link): not bad input,
+// but output that stopped; commands exit 3 for it.
+class WriteError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Throws WriteError naming the path and the reason (a full disk: "No space left on
 // device") and leaves neither the temporary nor a partial file.
 void write_file_atomically(const std::string& path, const std::string& contents);
 // Writes the file under its final name, over an existing one in place (the file keeps its

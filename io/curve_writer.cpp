@@ -16,7 +16,7 @@
 namespace plastica {
 
 CurveWriter::CurveWriter(const std::string& path, const Model& model) : path_(path), model_(&model) {
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd_ < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
     const std::string header = curve_header(model);
     try {

@@ -1,5 +1,9 @@
 #include "model_building.hpp"
 
+#include <unistd.h>
+
+#include <sstream>
+
 #include <cmath>
 
 namespace plastica {
@@ -83,6 +87,29 @@ bool is_cantilever_with_tip_load(const Model& m) {
     if (degree[s.node] != 1 || degree[m.loads.front().node] != 1) return false;
     const auto& f = m.loads.front().value;
     return f[2] == 0.0 && std::abs(f[0] * c + f[1] * sn) <= 1e-12 * std::hypot(f[0], f[1]);
+}
+
+double fibre_states(const Model& model) {
+    double states = 0.0;
+    for (const ElementSpec& e : model.elements) {
+        const SectionSpec& s = model.sections[static_cast<std::size_t>(e.section)];
+        if (!s.steel || s.plasticity == Plasticity::none) continue;
+        const double sections = s.plasticity == Plasticity::hinges ? 2.0 : (s.integration_points > 0 ? s.integration_points : 5);
+        states += static_cast<double>(s.fibres.size()) * sections;
+    }
+    return states;
+}
+
+std::optional<std::string> setup_too_large(const Model& model) {
+    const double bytes = fibre_states(model) * bytes_per_fibre_state;
+    const double memory = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+    if (!(memory > 0.0) || bytes < 0.8 * memory) return std::nullopt;
+    std::ostringstream why;
+    why.precision(3);
+    why << "the sections' fibres would take about " << bytes / 1e9 << " GB (" << fibre_states(model) << " fibre states: fibres × "
+        << "sections along each element × elements), more than the " << 0.8 * memory / 1e9
+        << " GB this machine can give it; use fewer fibres or elements";
+    return why.str();
 }
 
 } // namespace plastica

@@ -9,6 +9,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace plastica {
@@ -30,5 +31,13 @@ void infer_report_measure(Model& model);
 // A straight elastic cantilever clamped at one end with one transverse load at the other and
 // nothing else (the closed form `exact = "cantilever_tip_load"` describes).
 bool is_cantilever_with_tip_load(const Model& model);
+// The fibre states the analysis will hold: every inelastic section's fibres at each of its
+// elements' sections (two hinge ends, or the integration points along a fibre member).
+double fibre_states(const Model& model);
+// Bytes of memory the analysis's fibre states take, measured on rings of 10³–10⁵ fibres a section.
+inline constexpr double bytes_per_fibre_state = 300.0;
+// Why the model is refused before its set-up starts (its fibre states would not fit in this
+// machine's memory), with the estimate; nothing when it fits.
+std::optional<std::string> setup_too_large(const Model& model);
 
 } // namespace plastica

@@ -1,5 +1,8 @@
 #include "report_page.hpp"
 
+#include "bounded_file.hpp"
+#include "safe_names.hpp"
+
 #include "xml_text.hpp"
 
 #include <nlohmann/json.hpp>
@@ -38,19 +41,30 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-std::string file_bytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ReportError("cannot read " + path.string());
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+// A picture embedded whole, with its caption.
+std::string figure_of_bytes(const std::string& bytes, const std::string& type, const std::string& caption) {
+    return "<figure><img alt=\"" + xml_escaped(caption) + "\" src=\"data:" + type + ";base64," + base64(bytes) + "\"><figcaption>" +
+           xml_escaped(caption) + "</figcaption></figure>\n";
 }
 
-// A picture embedded whole, with its caption.
+std::string picture_type(const std::string& name) { return fs::path(name).extension() == ".gif" ? "image/gif" : "image/png"; }
+
+// A picture of the result folder: read only inside it, never through a symbolic link.
+std::string figure(const std::string& folder, const std::string& relative, const std::string& caption) {
+    try {
+        return figure_of_bytes(read_file_inside(folder, relative, picture_file_limit), picture_type(relative), caption);
+    } catch (const FileReadError& e) {
+        throw ReportError(e.what());
+    }
+}
+
+// A picture the user named (a comparison's actual, reference and difference).
 std::string figure(const fs::path& picture, const std::string& caption) {
-    const std::string type = picture.extension() == ".gif" ? "image/gif" : "image/png";
-    return "<figure><img alt=\"" + xml_escaped(caption) + "\" src=\"data:" + type + ";base64," + base64(file_bytes(picture)) +
-           "\"><figcaption>" + xml_escaped(caption) + "</figcaption></figure>\n";
+    try {
+        return figure_of_bytes(read_bounded_file(picture.string(), picture_file_limit), picture_type(picture.string()), caption);
+    } catch (const FileReadError& e) {
+        throw ReportError(e.what());
+    }
 }
 
 const char* style = R"(<style>
@@ -97,10 +111,10 @@ int frame_step(const fs::path& frame) {
 // The frames named by what happens in them: the start, the first yield, the peak load and the
 // last step, each the drawn frame nearest its step (frames that coincide share one picture and
 // both names). Without a curve.csv: the first, the last and two evenly between.
-std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::path>& frames, const fs::path& curve_csv,
+std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::path>& frames, const std::string& folder,
                                                          const std::string& load_label) {
     std::vector<std::pair<int, std::string>> events;
-    std::ifstream in(curve_csv);
+    std::istringstream in(is_file_inside(folder, "curve.csv") ? read_file_inside(folder, "curve.csv", result_file_limit) : "");
     std::string line;
     if (in && std::getline(in, line)) {
         std::vector<std::string> header;
@@ -227,11 +241,13 @@ std::string model_section(const nlohmann::json& model) {
 
 } // namespace
 
-std::string run_page(const std::string& folder) {
+namespace {
+
+std::string checked_run_page(const std::string& folder) {
     const fs::path dir(folder);
     const fs::path run_json = dir / "run.json";
-    if (!fs::exists(run_json)) throw ReportError(folder + " holds no run.json: not a result folder of plastica run");
-    const nlohmann::json run = nlohmann::json::parse(file_bytes(run_json), nullptr, false);
+    if (!is_file_inside(folder, "run.json")) throw ReportError(folder + " holds no run.json: not a result folder of plastica run");
+    const nlohmann::json run = nlohmann::json::parse(read_file_inside(folder, "run.json", result_file_limit), nullptr, false);
     if (run.is_discarded() || !run.is_object() || run.value("program", "") != "plastica")
         throw ReportError(run_json.string() + " is not a run.json of plastica");
     const std::string scene = run.value("scene", "scene"), title = run.value("title", "");
@@ -279,22 +295,37 @@ std::string run_page(const std::string& folder) {
              {"chart.png", load + " against " + displacement},
              {"contact_sheet.png", "nine steps across the run"},
              {"shapes.png", "deformed shapes"},
-             {scene + ".gif", "the animation"}})
-        if (fs::exists(dir / file)) pictures += figure(dir / file, caption);
+             // The scene's name names the animation only where it is a plain name: a run.json
+             // from elsewhere may name anything.
+             {is_plain_name(scene) ? scene + ".gif" : std::string(), "the animation"}})
+        if (!file.empty() && is_file_inside(folder, file)) pictures += figure(folder, file, caption);
     std::vector<fs::path> frames;
-    if (fs::is_directory(dir / "frames"))
+    if (fs::is_directory(fs::symlink_status(dir / "frames")))
         for (const auto& f : fs::directory_iterator(dir / "frames"))
-            if (f.path().extension() == ".png") frames.push_back(f.path());
+            if (f.path().extension() == ".png" && is_file_inside(folder, "frames/" + f.path().filename().string()))
+                frames.push_back(f.path().filename());
     std::sort(frames.begin(), frames.end());
     if (!frames.empty()) {
         pictures += "<h2>Key frames</h2>\n<div class=\"row\">\n";
-        for (const auto& [frame, name] : key_frames(frames, dir / "curve.csv", load))
-            pictures += figure(frame, name + " (" + frame.stem().string() + ")");
+        for (const auto& [frame, name] : key_frames(frames, folder, load))
+            pictures += figure(folder, "frames/" + frame.string(), name + " (" + frame.stem().string() + ")");
         pictures += "</div>\n";
     }
     body += pictures.empty() ? "<p>This folder holds no pictures (the run was made with --no-render or --curves-only).</p>\n"
                              : pictures;
     return page(scene + ": " + status, body);
+}
+
+} // namespace
+
+std::string run_page(const std::string& folder) {
+    try {
+        return checked_run_page(folder);
+    } catch (const FileReadError& e) {
+        throw ReportError(e.what());
+    } catch (const nlohmann::json::exception& e) {
+        throw ReportError(folder + "/run.json: a value of the wrong type (" + std::string(e.what()) + ")");
+    }
 }
 
 std::string comparison_page(const std::string& title, const std::string& summary, const std::vector<FailedPicture>& failed) {

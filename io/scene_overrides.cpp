@@ -99,7 +99,9 @@ std::string apply(toml::table& root, const Override& o) {
         if (!list) fail(o, "the scene has no [[" + s.key + "]]");
         std::size_t chosen = list->size();
         if (std::all_of(s.selector.begin(), s.selector.end(), [](unsigned char c) { return std::isdigit(c); })) {
-            chosen = std::stoul(s.selector) - 1;
+            // Compared as text first: an index of any length is refused without overflowing.
+            const bool fits = s.selector.size() <= 9;
+            chosen = fits ? std::stoul(s.selector) - 1 : list->size();
             if (chosen >= list->size())
                 fail(o, "the scene has " + std::to_string(list->size()) + " [[" + s.key + "]] table(s), not " + s.selector);
         } else {

@@ -1,4 +1,6 @@
 #include "scene_reader.hpp"
+
+#include "bounded_file.hpp"
 #include "member_geometry.hpp"
 #include "mesh_builder.hpp"
 #include "model_building.hpp"
@@ -869,11 +871,13 @@ Model read_scene_table(const toml::table& root, const std::string& name_for_erro
 }
 
 Model read_scene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path, 0, "", "cannot open the scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return read_scene_text(text.str(), path);
+    std::string text;
+    try {
+        text = read_bounded_file(path, scene_file_limit);
+    } catch (const FileReadError& e) {
+        throw SceneError(path, 0, "", std::string("cannot read the scene file: ") + e.what());
+    }
+    return read_scene_text(text, path);
 }
 
 } // namespace plastica

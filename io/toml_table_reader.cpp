@@ -1,5 +1,7 @@
 #include "toml_table_reader.hpp"
 
+#include "safe_names.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -194,7 +196,10 @@ std::string TomlTableReader::string(const std::string& key) {
         missing(k, "a string");
     }
     if (!n->is_string()) fail(key, "expected a string");
-    return *n->value<std::string>();
+    std::string text = *n->value<std::string>();
+    // A text is printed, drawn and written into XML and CSV: one line of a bounded length.
+    if (const std::optional<std::string> problem = text_problem(text, max_text_bytes)) fail(key, "the text " + *problem);
+    return text;
 }
 
 std::string TomlTableReader::string_or(const std::string& key, const std::string& fallback) {

@@ -18,6 +18,9 @@
 
 namespace plastica {
 
+// The longest text a scene may hold (a title, a label, a name): drawn whole, so bounded.
+inline constexpr std::size_t max_text_bytes = 1024;
+
 class TomlTableReader {
 public:
     // Reads `table` as io/scene_schema.cpp declares `spec`: every typed read below takes the
@@ -47,6 +50,7 @@ public:
     int integer_or(const std::string& key, int fallback);
     bool boolean(const std::string& key);
     bool boolean_or(const std::string& key, bool fallback);
+    // A string of at most max_text_bytes and no control character but tab.
     std::string string(const std::string& key);
     std::string string_or(const std::string& key, const std::string& fallback);
     std::string choice(const std::string& key);

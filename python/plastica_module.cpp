@@ -3,7 +3,10 @@
 // the curve and run.json as the command line writes them, each step's arrays by the result
 // schema's names (io/step_dataset.hpp), and the same files on request. python/plastica/ wraps it.
 #include "analysis/path_following.hpp"
+#include "atomic_file.hpp"
 #include "curve_writer.hpp"
+#include "model_building.hpp"
+#include "output_folder.hpp"
 #include "run_report.hpp"
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
@@ -68,6 +71,7 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
         run->dataset.emplace(run->model);
         run->report.model = &run->model;
         const double read_seconds = seconds_since(t0);
+        if (const std::optional<std::string> why = setup_too_large(run->model)) throw SceneError(run->scene_file, 0, "", *why);
         PathFollowing analysis(run->model);
         if (const std::string m = analysis.initial_mechanism(); !m.empty()) throw SceneError(run->scene_file, 0, "", m);
         RunReport& report = run->report;
@@ -94,16 +98,18 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
 void write_run(const Run& run, const std::string& folder) {
     namespace fs = std::filesystem;
     py::gil_scoped_release unlocked;
-    fs::create_directories(folder);
+    // Held while writing: another thread or process writing into the same folder is refused.
+    OutputFolderOptions options;
+    options.scene_name = run.model.name;
+    options.force = true; // a Result is written where the script says, as before
+    options.holder = "a Python Result.write";
+    const OutputFolder output(folder, std::move(options));
     {
         VtuSeriesWriter series(run.model, folder);
         for (const StepResult& s : run.steps) series(s);
         series.finish();
     }
-    {
-        std::ofstream curve(fs::path(folder) / "curve.csv", std::ios::binary);
-        curve << run.curve_csv;
-    }
+    write_file_atomically((fs::path(folder) / "curve.csv").string(), run.curve_csv);
     write_run_report((fs::path(folder) / "run.json").string(), run.report);
 }
 

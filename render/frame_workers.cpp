@@ -1,5 +1,8 @@
 #include "frame_workers.hpp"
 #include "render_error.hpp"
+#include "interruption.hpp"
+
+#include "atomic_file.hpp"
 
 #include <fcntl.h>
 #include <sched.h>
@@ -41,8 +44,15 @@ void send_line(int fd, std::string line) {
 [[noreturn]] void work(int fd, int worker, int workers,
                        const std::function<void(int, int, const FrameDone&)>& draw_share) {
     int status = 0;
+    // A worker ends at its parent's SIGTERM (the parent's own handler, inherited, would only set a flag here).
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGINT, SIG_DFL);
     try {
         draw_share(worker, workers, [fd](std::size_t frame) { send_line(fd, "done " + std::to_string(frame)); });
+    } catch (const WriteError& e) {
+        // Output that could not be written (a full disk) is told apart from bad input.
+        send_line(fd, std::string("write-error ") + e.what());
+        status = 1;
     } catch (const std::exception& e) {
         send_line(fd, std::string("error ") + e.what());
         status = 1;
@@ -94,11 +104,13 @@ void draw_in_workers(int workers, const std::function<void(int, int, const Frame
     close(fds[1]);
 
     std::string first_error, pending;
+    bool failed_to_write = false;
     try {
         on_started();
         char buffer[4096];
         for (;;) {
             const ssize_t n = read(fds[0], buffer, sizeof buffer);
+            throw_if_render_stopped();
             if (n < 0 && errno == EINTR) continue;
             if (n <= 0) break; // every worker has closed its end
             pending.append(buffer, static_cast<std::size_t>(n));
@@ -106,6 +118,7 @@ void draw_in_workers(int workers, const std::function<void(int, int, const Frame
                 const std::string line = pending.substr(0, end);
                 if (line.rfind("done ", 0) == 0) on_frame(std::stoul(line.substr(5)));
                 else if (line.rfind("error ", 0) == 0 && first_error.empty()) first_error = line.substr(6);
+                else if (line.rfind("write-error ", 0) == 0 && first_error.empty()) first_error = line, failed_to_write = true;
             }
         }
     } catch (...) {
@@ -123,6 +136,8 @@ void draw_in_workers(int workers, const std::function<void(int, int, const Frame
         else if (WIFEXITED(status) && WEXITSTATUS(status) != 0 && ended_badly.empty())
             ended_badly = "a drawing process failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
     }
+    throw_if_render_stopped();
+    if (failed_to_write) throw WriteError(first_error.substr(12));
     if (!first_error.empty()) throw RenderError(first_error);
     if (!ended_badly.empty()) throw RenderError(ended_badly);
 }

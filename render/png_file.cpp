@@ -2,17 +2,19 @@
 #include "render_error.hpp"
 
 #include "atomic_file.hpp"
+#include "bounded_file.hpp"
+#include "png_decode.hpp"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
-#include <vtkPNGReader.h>
 #include <vtkPointData.h>
 #include <vtkType.h>
 
 #include <png.h>
 
 #include <csetjmp>
+#include <cstring>
 #include <filesystem>
 #include <vector>
 
@@ -73,15 +75,22 @@ std::string encode_png(vtkImageData* image) {
 void write_png(vtkImageData* image, const std::string& path) { write_file_atomically(path, encode_png(image)); }
 
 vtkSmartPointer<vtkImageData> read_png(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw RenderError(path + ": missing");
-    vtkNew<vtkPNGReader> reader;
-    if (!reader->CanReadFile(path.c_str())) throw RenderError(path + ": not a PNG image");
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    if (reader->GetErrorCode() != 0) throw RenderError(path + ": unreadable PNG");
+    std::string bytes, why;
+    try {
+        bytes = read_bounded_file(path, picture_file_limit);
+    } catch (const FileReadError& e) {
+        throw RenderError(e.what());
+    }
+    const std::optional<DecodedPng> png = decode_png(bytes, why);
+    if (!png) throw RenderError(path + ": " + why);
     auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(reader->GetOutput());
+    image->SetDimensions(png->width, png->height, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, png->channels);
+    // VTK's rows run from the bottom up, PNG's from the top down.
+    auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+    const std::size_t row = static_cast<std::size_t>(png->width) * png->channels;
+    for (std::size_t y = 0; y < static_cast<std::size_t>(png->height); ++y)
+        std::memcpy(pixels + (png->height - 1 - y) * row, png->pixels.data() + y * row, row);
     return image;
 }
 

@@ -1,4 +1,4 @@
-// PNG files: written through libpng (settings for fast frames), read through VTK's reader. Writing goes to a temporary name and a
+// PNG files: written through libpng (settings for fast frames), read through libpng with bounds (png_decode.hpp). Writing goes to a temporary name and a
 // rename, so no half-written PNG ever has its final name.
 #pragma once
 
@@ -12,7 +12,7 @@ namespace plastica::render {
 
 std::string encode_png(vtkImageData* image);
 void write_png(vtkImageData* image, const std::string& path);
-// Throws RenderError naming the file when it is missing or not a PNG.
+// Throws RenderError naming the file when it is missing, not a PNG, truncated or too large.
 vtkSmartPointer<vtkImageData> read_png(const std::string& path);
 
 } // namespace plastica::render

@@ -1,4 +1,6 @@
 #include "render_series.hpp"
+#include "interruption.hpp"
+#include "safe_names.hpp"
 #include "reference_points.hpp"
 #include "shapes_figure.hpp"
 #include "animation.hpp"
@@ -117,13 +119,14 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
     const int shrink = animation_shrink(options.width);
     std::unique_ptr<GifWriter> gif;
     if (options.animation)
-        gif = std::make_unique<GifWriter>((out / (summary.scene + ".gif")).string(), options.width / shrink,
+        gif = std::make_unique<GifWriter>((out / (file_stem_for(summary.scene) + ".gif")).string(), options.width / shrink,
                                           options.height / shrink);
 
     auto draw_share = [&](int worker, int workers, const FrameDone& done) {
         FrameComposer composer(summary, first, base, options.width, options.height, layers);
         std::future<void> encoding;
         for (std::size_t k = static_cast<std::size_t>(worker); k < steps.size(); k += static_cast<std::size_t>(workers)) {
+            throw_if_render_stopped();
             const std::size_t index = steps[k];
             vtkSmartPointer<vtkImageData> image = composer.draw(grid_of(index), index);
             if (gif) write_animation_frame(gif->frame_file(), k, animation_pixels(image, shrink));
@@ -144,7 +147,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
         ContactSheet sheet(steps.size(), 3, 3, 1.0);
         FrameComposer tiles(summary, first, base, options.width / 2, options.height / 2, layers, 1.25);
         for (std::size_t k = 0; k < steps.size(); ++k)
-            if (sheet.wants(k)) sheet.keep(k, tiles.draw(grid_of(steps[k]), steps[k]));
+            if (sheet.wants(k)) throw_if_render_stopped(), sheet.keep(k, tiles.draw(grid_of(steps[k]), steps[k]));
         std::vector<const SeriesSummary*> runs{&summary};
         for (const SeriesSummary& o : overlays) runs.push_back(&o);
         write_png(draw_curve_chart(runs, options.width, options.height, references), (out / "chart.png").string());

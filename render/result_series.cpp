@@ -1,4 +1,8 @@
 #include "result_series.hpp"
+
+#include "bounded_file.hpp"
+#include "safe_names.hpp"
+#include "toml_table_reader.hpp"
 #include "render_error.hpp"
 
 #include <vtkAbstractArray.h>
@@ -80,12 +84,26 @@ void require_file(const std::string& file, const std::string& listed_in) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
         throw RenderError(file + ": missing" + (listed_in.empty() ? "" : " (listed in " + listed_in + ")"));
+    if (fs::file_size(file, ec) > result_file_limit)
+        throw RenderError(file + ": larger than the " + std::to_string(result_file_limit >> 20) + " MiB a result file may have");
+}
+
+// A file a collection lists: a plain name inside the collection's folder, reached without a
+// symbolic link, so that a crafted .pvd cannot make the drawing read files elsewhere.
+void require_file_inside(const std::string& folder, const std::string& file, const std::string& listed_in) {
+    const std::string path = (fs::path(folder) / file).string();
+    if (!is_plain_relative_path(file)) throw RenderError(file + ": outside the series' folder (listed in " + listed_in + ")");
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(path, ec)) && !is_file_inside(folder, file))
+        throw RenderError(path + ": reached through a symbolic link, not read (listed in " + listed_in + ")");
+    require_file(path, listed_in);
 }
 
 std::string find_pvd(const std::string& folder) {
     std::vector<std::string> found;
     for (const auto& entry : fs::directory_iterator(folder))
-        if (entry.path().extension() == ".pvd") found.push_back(entry.path().string());
+        if (entry.path().extension() == ".pvd" && entry.symlink_status().type() == fs::file_type::regular)
+            found.push_back(entry.path().string());
     if (found.size() != 1)
         throw RenderError(folder + ": expected one .pvd result series, found " + std::to_string(found.size()));
     return found.front();
@@ -119,6 +137,7 @@ ResultSeries open_series(const std::string& folder_or_pvd) {
         double time = 0.0;
         if (std::string(item->GetName()) != "DataSet" || !file || !item->GetScalarAttribute("timestep", time))
             throw RenderError(series.pvd + ": DataSet " + std::to_string(i + 1) + " has no file or timestep");
+        require_file_inside(series.folder, file, series.pvd);
         const std::string path = (fs::path(series.folder) / file).string();
         int part = 0;
         item->GetScalarAttribute("part", part);
@@ -131,8 +150,6 @@ ResultSeries open_series(const std::string& folder_or_pvd) {
         series.steps.push_back({time, path});
     }
     if (series.steps.empty()) throw RenderError(series.pvd + ": lists no steps");
-    for (const SeriesStep& s : series.steps) require_file(s.file, series.pvd);
-    if (!series.base_file.empty()) require_file(series.base_file, series.pvd);
     return series;
 }
 
@@ -162,7 +179,12 @@ double field_value(vtkUnstructuredGrid* grid, const char* name) {
 
 std::string field_text(vtkUnstructuredGrid* grid, const char* name, const std::string& fallback) {
     auto* a = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray(name));
-    return (a && a->GetNumberOfValues() > 0) ? a->GetValue(0) : fallback;
+    if (!a || a->GetNumberOfValues() == 0) return fallback;
+    // A series from elsewhere may hold any text: one line of a bounded length is drawn.
+    std::string text = a->GetValue(0).substr(0, max_text_bytes);
+    for (char& c : text)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    return text;
 }
 
 } // namespace plastica::render

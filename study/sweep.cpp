@@ -3,6 +3,9 @@
 #include "curve_error.hpp"
 #include "study_error.hpp"
 
+#include "bounded_file.hpp"
+#include "safe_names.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -10,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -58,12 +62,24 @@ std::vector<std::string> split_csv_line(const std::string& line) {
     return fields;
 }
 
-// A run's curve.csv: its load against its control displacement, by the header's names.
-Curve read_run_curve(const std::string& file) {
-    std::ifstream in(file);
+// A number of a CSV cell, or nothing: a cell from someone else's folder may hold anything.
+std::optional<double> cell_number(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size()) return std::nullopt;
+    return v;
+}
+
+// A run's curve.csv: its load against its control displacement, by the header's names; read only
+// inside the sweep folder, rows that are not two numbers passed over.
+Curve read_run_curve(const std::string& dir, const std::string& id) {
     Curve c;
+    const std::string relative = "runs/" + id + "/curve.csv";
+    if (!is_file_inside(dir, relative)) return c;
+    std::istringstream in(read_file_inside(dir, relative, result_file_limit));
     std::string line;
-    if (!in || !std::getline(in, line)) return c;
+    if (!std::getline(in, line)) return c;
     const std::vector<std::string> header = split_csv_line(line);
     const auto column = [&](const char* name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
@@ -73,10 +89,65 @@ Curve read_run_curve(const std::string& file) {
     while (std::getline(in, line)) {
         const std::vector<std::string> fields = split_csv_line(line);
         if (fields.size() != header.size()) continue;
-        c.displacement.push_back(std::stod(fields[d]));
-        c.load.push_back(std::stod(fields[p]));
+        const std::optional<double> x = cell_number(fields[d]), y = cell_number(fields[p]);
+        if (!x || !y) continue;
+        c.displacement.push_back(*x);
+        c.load.push_back(*y);
     }
     return c;
+}
+
+// A run's run.json, or null where there is none or it is not JSON.
+nlohmann::json read_run_json(const std::string& dir, const std::string& id) {
+    const std::string relative = "runs/" + id + "/run.json";
+    if (!is_file_inside(dir, relative)) return nullptr;
+    const auto j = nlohmann::json::parse(read_file_inside(dir, relative, result_file_limit), nullptr, false);
+    return j.is_discarded() ? nlohmann::json() : j;
+}
+
+// What sweep.csv takes of a run.json, each value checked for its type: a folder from elsewhere
+// may hold anything, and a wrong type is a failed run, not a crash.
+struct RunRecord {
+    std::string status = "running", reason, scene_file;
+    double peak_load = NAN, peak_displacement = NAN, seconds = 0.0;
+    long long iterations = 0, steps = 0;
+    bool has_peak = false;
+};
+
+std::optional<RunRecord> run_record(const nlohmann::json& j, std::string& problem) {
+    RunRecord r;
+    const auto text = [&](const char* key, std::string& into) {
+        if (!j.contains(key)) return true;
+        if (!j[key].is_string()) return problem = std::string("'") + key + "' is not a text", false;
+        into = j[key].get<std::string>();
+        return true;
+    };
+    const auto whole = [&](const char* key, long long& into) {
+        if (!j.contains(key)) return true;
+        if (!j[key].is_number_integer()) return problem = std::string("'") + key + "' is not a whole number", false;
+        into = j[key].get<long long>();
+        return true;
+    };
+    if (!text("status", r.status) || !text("reason", r.reason) || !text("scene_file", r.scene_file) ||
+        !whole("iterations", r.iterations) || !whole("steps", r.steps))
+        return std::nullopt;
+    if (j.contains("peak")) {
+        const nlohmann::json& peak = j["peak"];
+        if (!peak.is_object() || !peak.value("load", nlohmann::json(NAN)).is_number() ||
+            !peak.value("control_displacement", nlohmann::json(NAN)).is_number())
+            return problem = "'peak' is not an object of numbers", std::nullopt;
+        r.has_peak = true;
+        r.peak_load = peak.value("load", NAN);
+        r.peak_displacement = peak.value("control_displacement", NAN);
+    }
+    if (j.contains("seconds")) {
+        if (!j["seconds"].is_object()) return problem = "'seconds' is not an object", std::nullopt;
+        for (const auto& [stage, seconds] : j["seconds"].items()) {
+            if (!seconds.is_number()) return problem = "'seconds." + stage + "' is not a number", std::nullopt;
+            r.seconds += seconds.get<double>();
+        }
+    }
+    return r;
 }
 
 std::string number(double v) {
@@ -86,20 +157,33 @@ std::string number(double v) {
     return s.str();
 }
 
+// A key or value goes into a command line of jobs.txt and a Slurm script: one line, one argument.
+void check_plan_text(const std::string& where, const std::string& text) {
+    if (has_control_character(text))
+        throw StudyError(where + ": a value may not hold a newline or another control character (each run is one line of jobs.txt)");
+}
+
 } // namespace
 
 SweepPlan grid_plan(const std::vector<std::pair<std::string, std::vector<std::string>>>& lists, bool zip) {
     SweepPlan plan;
     if (lists.empty()) throw StudyError("a sweep needs --vary KEY=v1,v2,… or --sample");
+    if (lists.size() > max_sweep_keys)
+        throw StudyError("a sweep varies at most " + std::to_string(max_sweep_keys) + " keys, not " + std::to_string(lists.size()));
     std::size_t count = zip ? lists.front().second.size() : 1;
     for (const auto& [key, values] : lists) {
         if (values.empty()) throw StudyError("--vary " + key + ": no values");
+        check_plan_text("--vary " + key, key);
+        for (const std::string& v : values) check_plan_text("--vary " + key, v);
         if (zip && values.size() != count)
             throw StudyError("--zip needs lists of the same length (" + key + " has " + std::to_string(values.size()) + ")");
+        // Checked before multiplying: a product of lists must not wrap round to a small count.
+        if (!zip && count > max_sweep_runs / values.size())
+            throw StudyError("the grid has more than " + std::to_string(max_sweep_runs) + " runs (the lists' lengths multiply)");
         if (!zip) count *= values.size();
         plan.keys.push_back(key);
     }
-    if (count > 1'000'000) throw StudyError("the grid has " + std::to_string(count) + " runs, more than a million");
+    if (count > max_sweep_runs) throw StudyError("the grid has " + std::to_string(count) + " runs, more than a million");
     for (std::size_t r = 0; r < count; ++r) {
         std::vector<std::string> row;
         std::size_t rest = r;
@@ -144,8 +228,9 @@ SampledKey parse_sample(const std::string& text) {
 
 SweepPlan sample_plan(const std::vector<SampledKey>& keys, int runs, std::uint64_t seed) {
     if (runs < 1 || runs > 1'000'000) throw StudyError("--samples takes 1 to 1 000 000 runs");
+    if (keys.size() > max_sweep_keys) throw StudyError("a sweep samples at most " + std::to_string(max_sweep_keys) + " keys");
     SweepPlan plan;
-    for (const SampledKey& k : keys) plan.keys.push_back(k.key);
+    for (const SampledKey& k : keys) check_plan_text("--sample " + k.key, k.key), plan.keys.push_back(k.key);
     // One generator per key, seeded from the sweep's seed and the key's position, so adding a
     // key leaves the values of the others unchanged.
     std::vector<std::mt19937_64> generators;
@@ -196,18 +281,34 @@ void write_plan(const std::string& dir, const SweepPlan& plan) {
 }
 
 SweepPlan read_plan(const std::string& dir) {
-    std::ifstream in(fs::path(dir) / "plan.csv");
-    if (!in) throw StudyError(dir + ": no plan.csv (not a sweep folder)");
+    if (!is_file_inside(dir, "plan.csv")) throw StudyError(dir + ": no plan.csv (not a sweep folder)");
+    std::istringstream in;
+    try {
+        in.str(read_file_inside(dir, "plan.csv", result_file_limit));
+    } catch (const FileReadError& e) {
+        throw StudyError(e.what());
+    }
     SweepPlan plan;
     std::string line;
     if (!std::getline(in, line)) throw StudyError(dir + "/plan.csv: empty");
     std::vector<std::string> header = split_csv_line(line);
+    // A plan from elsewhere is held to what a sweep writes: its ids name run folders, and each
+    // key is a chart.
+    if (header.size() < 2 || header.size() > max_sweep_keys + 1)
+        throw StudyError(dir + "/plan.csv:1: expected an id and 1 to " + std::to_string(max_sweep_keys) + " keys, found " +
+                         std::to_string(header.size()) + " columns");
     plan.keys.assign(header.begin() + 1, header.end());
+    for (const std::string& key : plan.keys) check_plan_text(dir + "/plan.csv:1", key);
     for (int number = 2; std::getline(in, line); ++number) {
         if (line.empty()) continue;
         std::vector<std::string> fields = split_csv_line(line);
+        const std::string where = dir + "/plan.csv:" + std::to_string(number);
         if (fields.size() != header.size())
-            throw StudyError(dir + "/plan.csv:" + std::to_string(number) + ": expected " + std::to_string(header.size()) + " fields");
+            throw StudyError(where + ": expected " + std::to_string(header.size()) + " fields");
+        if (!is_plain_name(fields.front()))
+            throw StudyError(where + ": the id '" + fields.front() + "' is not a plain name (it names the run's folder)");
+        for (const std::string& v : fields) check_plan_text(where, v);
+        if (plan.ids.size() == max_sweep_runs) throw StudyError(where + ": more than a million runs");
         plan.ids.push_back(fields.front());
         plan.values.emplace_back(fields.begin() + 1, fields.end());
     }
@@ -236,14 +337,23 @@ std::vector<std::string> run_arguments(const std::string& scene, const std::stri
 }
 
 bool run_finished(const std::string& dir, const std::string& id) {
-    std::ifstream in(fs::path(dir) / "runs" / id / "run.json");
-    if (!in) return false;
-    const auto j = nlohmann::json::parse(in, nullptr, false);
-    return !j.is_discarded() && j.is_object() && j.value("status", "running") != "running";
+    const nlohmann::json j = read_run_json(dir, id);
+    std::string problem;
+    const std::optional<RunRecord> r = j.is_object() ? run_record(j, problem) : std::nullopt;
+    return r && r->status != "running";
 }
 
 void write_jobs(const std::string& dir, const std::string& program, const std::string& scene, const SweepPlan& plan,
                 RunOutput output) {
+    // Each path is quoted; one with a newline would still break a line of either file apart.
+    for (const auto& [what, path] : {std::pair{"the output folder", fs::absolute(dir).string()}, std::pair{"the program", program},
+                                     std::pair{"the scene", scene}})
+        if (has_control_character(path) || path.find('"') != std::string::npos)
+            throw StudyError(std::string(what) + " '" + path + "' holds a control character or '\"': it cannot go into jobs.txt and sweep.sbatch");
+    for (std::size_t r = 0; r < plan.ids.size(); ++r) {
+        for (const std::string& v : plan.values[r]) check_plan_text("run " + plan.ids[r], v);
+        if (!is_plain_name(plan.ids[r])) throw StudyError("run id '" + plan.ids[r] + "' is not a plain name");
+    }
     fs::create_directories(fs::path(dir) / "logs");
     std::ofstream jobs(fs::path(dir) / "jobs.txt");
     for (std::size_t r = 0; r < plan.ids.size(); ++r) {
@@ -255,11 +365,12 @@ void write_jobs(const std::string& dir, const std::string& program, const std::s
     std::ofstream sbatch(fs::path(dir) / "sweep.sbatch");
     const std::string logs = (fs::absolute(dir) / "logs").string();
     sbatch << "#!/bin/bash\n"
-           << "# A Slurm job array over jobs.txt: task N runs line N. Submit with: sbatch " << (fs::path(dir) / "sweep.sbatch").string() << "\n"
+           << "# A Slurm job array over jobs.txt: task N runs line N. Submit with: sbatch "
+           << quoted_for_shell((fs::path(dir) / "sweep.sbatch").string()) << "\n"
            << "#SBATCH --job-name=plastica-sweep\n"
            << "#SBATCH --array=1-" << plan.ids.size() << "\n"
            << "#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=1\n"
-           << "#SBATCH --output=" << logs << "/slurm-%a.txt\n"
+           << "#SBATCH --output=\"" << logs << "/slurm-%a.txt\"\n"
            << "line=$(sed -n \"${SLURM_ARRAY_TASK_ID}p\" " << quoted_for_shell(fs::absolute(fs::path(dir) / "jobs.txt").string()) << ")\n"
            << "eval \"$line\"\n";
     if (!jobs || !sbatch) throw StudyError(dir + ": cannot write jobs.txt or sweep.sbatch");
@@ -280,19 +391,28 @@ SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& 
         const std::string& id = plan.ids[r];
         out << id;
         for (const std::string& v : plan.values[r]) out << ',' << csv_field(v);
-        const fs::path folder = fs::path(dir) / "runs" / id;
-        std::ifstream in(folder / "run.json");
-        const auto j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-        const std::string status = j.is_object() ? j.value("status", "running") : "missing";
+        const nlohmann::json j = read_run_json(dir, id);
+        std::string problem;
+        const std::optional<RunRecord> record = j.is_object() ? run_record(j, problem) : std::nullopt;
+        const std::string status = !j.is_object() ? "missing" : record ? record->status : "malformed";
+        if (status == "malformed") {
+            ++summary.failed;
+            summary.failed_ids.push_back(id);
+            out << ",failed," << csv_field("run.json: " + problem) << ",,";
+            for (std::size_t k = 0; k < at.size(); ++k) out << ',';
+            out << ",,,\n";
+            continue;
+        }
         if (!j.is_object() || status == "running") {
             // Never silently dropped: a run that did not finish is a row that says so. A run
             // refused before it started (bad input: exit 2) left only its log.
-            std::ifstream log(fs::path(dir) / "logs" / (id + ".txt"));
+            const std::string log_name = "logs/" + id + ".txt";
+            std::istringstream log(is_file_inside(dir, log_name) ? read_file_inside(dir, log_name, result_file_limit) : "");
             std::string first;
-            if (log && std::getline(log, first) && !first.empty() && status != "running") {
+            if (std::getline(log, first) && !first.empty() && status != "running") {
                 ++summary.failed;
                 summary.failed_ids.push_back(id);
-                out << ",failed," << csv_field(first) << ",,";
+                out << ",failed," << csv_field(first.substr(0, 1000)) << ",,";
                 for (std::size_t k = 0; k < at.size(); ++k) out << ',';
                 out << ",,,\n";
                 continue;
@@ -305,20 +425,17 @@ SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& 
             continue;
         }
         if (status == "completed") ++summary.completed;
-        else if (status == "interrupted" || status == "missing") ++summary.failed, summary.failed_ids.push_back(id);
+        else if (status == "interrupted") ++summary.failed, summary.failed_ids.push_back(id);
         else ++summary.stopped;
-        out << ',' << status << ',' << csv_field(j.value("reason", ""));
-        out << ',' << j["peak"].value("load", NAN) << ',' << j["peak"].value("control_displacement", NAN);
-        const Curve curve = read_run_curve((folder / "curve.csv").string());
+        out << ',' << csv_field(status) << ',' << csv_field(record->reason);
+        out << ',' << record->peak_load << ',' << record->peak_displacement;
+        const Curve curve = read_run_curve(dir, id);
         for (double d : at) {
             const double p = curve.displacement.size() > 1 ? load_at(curve, d) : NAN;
             out << ',';
             if (std::isfinite(p)) out << p;
         }
-        double seconds = 0.0;
-        if (j.contains("seconds"))
-            for (const auto& [stage, s] : j["seconds"].items()) seconds += s.get<double>();
-        out << ',' << j.value("iterations", 0) << ',' << j.value("steps", 0) << ',' << seconds << '\n';
+        out << ',' << record->iterations << ',' << record->steps << ',' << record->seconds << '\n';
     }
     if (!out) throw StudyError(dir + "/sweep.csv: cannot write");
     return summary;
@@ -330,14 +447,14 @@ std::vector<SweepRunResult> read_sweep_results(const std::string& dir, const Swe
         SweepRunResult x;
         x.id = plan.ids[r];
         x.values = plan.values[r];
-        const fs::path folder = fs::path(dir) / "runs" / x.id;
-        std::ifstream in(folder / "run.json");
-        const auto j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-        x.finished = j.is_object() && j.value("status", "running") != "running" && j.contains("peak");
+        const nlohmann::json j = read_run_json(dir, x.id);
+        std::string problem;
+        const std::optional<RunRecord> record = j.is_object() ? run_record(j, problem) : std::nullopt;
+        x.finished = record && record->status != "running" && record->has_peak;
         if (x.finished) {
-            x.scene_file = j.value("scene_file", "");
-            x.peak_load = j["peak"].value("load", NAN);
-            const Curve c = read_run_curve((folder / "curve.csv").string());
+            x.scene_file = record->scene_file;
+            x.peak_load = record->peak_load;
+            const Curve c = read_run_curve(dir, x.id);
             x.displacement = c.displacement;
             x.load = c.load;
         }

@@ -14,6 +14,10 @@
 
 namespace plastica {
 
+// What a sweep may hold: runs of a grid or a sample, and keys varied (each key a chart).
+inline constexpr std::size_t max_sweep_runs = 1'000'000;
+inline constexpr std::size_t max_sweep_keys = 64;
+
 struct SweepPlan {
     std::vector<std::string> keys;                  // scene key paths, as --set takes them
     std::vector<std::string> ids;                   // r0001, r0002, …

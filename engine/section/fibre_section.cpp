@@ -163,16 +163,37 @@ void FibreSection::build_capacity_curves() {
         const double below_sign = side == 0 ? 1.0 : -1.0;
         std::vector<CapacityPoint>& curve = capacity_[side];
         curve.clear();
-        for (std::size_t k = 0; k <= order.size(); ++k) {
-            CapacityPoint p;
-            for (std::size_t m = 0; m < order.size(); ++m) {
-                const SectionFibre& f = fibres_[order[m]];
-                const double sign = m < k ? below_sign : -below_sign;
-                const double s = sign * (sign > 0.0 ? f.limit_tension : f.limit_compression);
-                p.N += s * f.area;
-                p.M -= s * f.area * f.y;
+        const std::size_t n = order.size();
+        const auto contribution = [&](std::size_t m, double sign) {
+            const SectionFibre& f = fibres_[order[m]];
+            const double s = sign * (sign > 0.0 ? f.limit_tension : f.limit_compression);
+            return CapacityPoint{s * f.area, -s * f.area * f.y};
+        };
+        if (n <= direct_capacity_sum_limit) {
+            // Each breakpoint summed over the fibres in order.
+            for (std::size_t k = 0; k <= n; ++k) {
+                CapacityPoint p;
+                for (std::size_t m = 0; m < n; ++m) {
+                    const CapacityPoint c = contribution(m, m < k ? below_sign : -below_sign);
+                    p.N += c.N;
+                    p.M += c.M;
+                }
+                curve.push_back(p);
             }
-            curve.push_back(p);
+        } else {
+            // A prefix and a suffix sum: O(n) instead of O(n²), so that a section of 10⁵ fibres
+            // is set up in milliseconds, not minutes. The breakpoints agree with the sums above
+            // to round-off.
+            std::vector<CapacityPoint> below(n + 1), above(n + 1);
+            for (std::size_t m = 0; m < n; ++m) {
+                const CapacityPoint c = contribution(m, below_sign);
+                below[m + 1] = {below[m].N + c.N, below[m].M + c.M};
+            }
+            for (std::size_t m = n; m-- > 0;) {
+                const CapacityPoint c = contribution(m, -below_sign);
+                above[m] = {above[m + 1].N + c.N, above[m + 1].M + c.M};
+            }
+            for (std::size_t k = 0; k <= n; ++k) curve.push_back({below[k].N + above[k].N, below[k].M + above[k].M});
         }
         std::sort(curve.begin(), curve.end(), [](const CapacityPoint& a, const CapacityPoint& b) { return a.N < b.N; });
     }
