@@ -226,10 +226,12 @@ int sweep_command(const Args& args) {
                 return bad_input;
             }
             write_jobs(dir, self(), scene, plan, output);
+            // Commands to paste into a shell: every path one word.
+            const auto in_dir = [&](const char* name) { return quoted_for_shell((fs::path(dir) / name).string()); };
             std::cout << dir << "/jobs.txt: " << plan.ids.size() << " runs. Run them with GNU Parallel:\n"
-                      << "  parallel --joblog " << dir << "/joblog < " << dir << "/jobs.txt\n"
-                      << "or as a Slurm array: sbatch " << dir << "/sweep.sbatch\n"
-                      << "then: plastica merge " << dir << "\n";
+                      << "  parallel --joblog " << in_dir("joblog") << " < " << in_dir("jobs.txt") << "\n"
+                      << "or as a Slurm array: sbatch " << in_dir("sweep.sbatch") << "\n"
+                      << "then: plastica merge " << quoted_for_shell(dir) << "\n";
             return ok;
         }
     } catch (const StudyError& e) {

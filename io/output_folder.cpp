@@ -51,7 +51,8 @@ std::vector<std::pair<std::string, fs::file_status>> entries_below(const std::st
 bool modified_since(const fs::path& file, const std::timespec& since) {
     struct stat st {};
     if (::lstat(file.c_str(), &st) != 0) return false;
-    return st.st_mtim.tv_sec > since.tv_sec || (st.st_mtim.tv_sec == since.tv_sec && st.st_mtim.tv_nsec >= since.tv_nsec);
+    // Strictly later: a file the user left just as the run began stays the user's.
+    return st.st_mtim.tv_sec > since.tv_sec || (st.st_mtim.tv_sec == since.tv_sec && st.st_mtim.tv_nsec > since.tv_nsec);
 }
 
 std::string lock_holder(int fd) {
@@ -106,7 +107,9 @@ OutputFolder::OutputFolder(std::string path, OutputFolderOptions options) : path
         write_all_at(lock_fd_, holder, 0, path_ + "/" + lock_file_name);
     } catch (const std::exception&) {
     }
-    ::clock_gettime(CLOCK_REALTIME_COARSE, &started_); // the clock file times are taken from
+    // The fine clock: a file written before this moment has a time no later than it, whatever
+    // the file system's own granularity.
+    ::clock_gettime(CLOCK_REALTIME, &started_);
     try {
         prepare();
     } catch (...) {

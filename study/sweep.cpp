@@ -29,11 +29,6 @@ std::string run_id(std::size_t index) {
     return b;
 }
 
-std::string quoted_for_shell(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
 
 std::string csv_field(const std::string& s) {
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -164,6 +159,12 @@ void check_plan_text(const std::string& where, const std::string& text) {
 }
 
 } // namespace
+
+std::string quoted_for_shell(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
 
 SweepPlan grid_plan(const std::vector<std::pair<std::string, std::vector<std::string>>>& lists, bool zip) {
     SweepPlan plan;

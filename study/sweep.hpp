@@ -52,6 +52,8 @@ std::vector<std::string> run_arguments(const std::string& scene, const std::stri
 // Whether a run folder holds a finished run (run.json with a final status).
 bool run_finished(const std::string& dir, const std::string& id);
 
+// One word for a POSIX shell, whatever it holds: in single quotes, each ' written '\''.
+std::string quoted_for_shell(const std::string& s);
 // jobs.txt (one shell-quoted command line per run) and sweep.sbatch (a Slurm array over it).
 void write_jobs(const std::string& dir, const std::string& program, const std::string& scene, const SweepPlan& plan,
                 RunOutput output = RunOutput::curves);

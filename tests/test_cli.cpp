@@ -1,5 +1,6 @@
 // End-to-end tests of the command line: exit codes, messages, and what the files hold (values
 // of the CSV and JSON files, pixels of the pictures).
+#include "cli_helpers.hpp"
 #include "png_file.hpp"
 #include "render_helpers.hpp"
 
@@ -18,24 +19,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int code;
-    std::string output;
-};
-
-Result command(const std::string& args) {
-    // One log per test process: CTest runs the test cases in parallel.
-    const fs::path log = fs::temp_directory_path() / ("plastica_cli_" + std::to_string(::getpid()) + ".log");
-    // No DISPLAY: drawing must not need an X server.
-    const std::string cmd = "env -u DISPLAY " + std::string(PLASTICA_BINARY) + " " + args + " > " + log.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    return {WEXITSTATUS(status), text.str()};
-}
-
-std::string model(const std::string& name) { return std::string(PLASTICA_SOURCE_DIR) + "/models/" + name; }
+using cli_test::command;
+using cli_test::model;
+using cli_test::Result;
 
 // A CSV file of numbers under a header: column by name, rows in order (text cells read as NaN).
 struct CsvTable {
