@@ -64,18 +64,32 @@ bench: deps
 	cmake --build build-bench -j $(JOBS) --target plastica_bench
 	build-bench/bench/plastica_bench
 
-# Fuzzes the scene reader for FUZZ_SECONDS (clang's libFuzzer, ASan + UBSan); crashes land in
-# build-fuzz/findings/ and become cases in tests/test_scene_errors.cpp.
+# Fuzzes, for FUZZ_SECONDS each, the readers of what comes from outside (clang's libFuzzer, ASan +
+# UBSan): scene files, --set overrides, PNGs given to compare, and result folders given to report
+# and merge. Crashes land in build-fuzz/findings/ and become test cases (tests/test_scene_errors.cpp,
+# tests/test_cli_untrusted.cpp).
 FUZZ_SECONDS ?= 120
+FUZZERS = scene_reader_fuzzer override_fuzzer png_decode_fuzzer result_folder_fuzzer
 fuzz:
 	@./scripts/install-deps.sh clang
 	$(call configure,build-fuzz) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DPLASTICA_FUZZ=ON -DPLASTICA_TESTS=OFF
-	cmake --build build-fuzz -j $(JOBS) --target scene_reader_fuzzer
-	mkdir -p build-fuzz/corpus build-fuzz/findings
-	cp models/*.toml build-fuzz/corpus/
-	build-fuzz/fuzz/scene_reader_fuzzer build-fuzz/corpus -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
-	  -timeout=10 -rss_limit_mb=4096 -artifact_prefix=build-fuzz/findings/ -print_final_stats=1
+	cmake --build build-fuzz -j $(JOBS) --target $(FUZZERS)
+	mkdir -p build-fuzz/findings $(addprefix build-fuzz/corpus/,$(FUZZERS))
+	cp models/*.toml build-fuzz/corpus/scene_reader_fuzzer/
+	printf 'material[1].fy=250' > build-fuzz/corpus/override_fuzzer/index
+	printf 'section[bar].I=2' > build-fuzz/corpus/override_fuzzer/name
+	printf 'scene.title="a title"' > build-fuzz/corpus/override_fuzzer/text
+	cp tests/snapshots/ring_elastic/contact_sheet.png build-fuzz/corpus/png_decode_fuzzer/
+	printf '{"program": "plastica", "scene": "ring", "status": "completed", "steps": 2}\0step,load,control_displacement\n0,0,0\n1,1,1\0id,analysis.increment\nr0001,1\n' \
+	  > build-fuzz/corpus/result_folder_fuzzer/seed
+	set -e; for f in $(FUZZERS); do \
+	  echo "fuzzing $$f for $(FUZZ_SECONDS) s"; \
+	  build-fuzz/fuzz/$$f build-fuzz/corpus/$$f -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	    -timeout=10 -rss_limit_mb=4096 -artifact_prefix=build-fuzz/findings/$$f- -print_final_stats=1 > build-fuzz/$$f.log 2>&1 \
+	    || { tail -n 40 build-fuzz/$$f.log; echo "$$f found a crash (build-fuzz/findings/)"; exit 1; }; \
+	  tail -n 3 build-fuzz/$$f.log; \
+	done
 
 # Rewrites the stored snapshot references on purpose (review the new pictures before committing).
 update-snapshots: build

@@ -77,3 +77,21 @@ if diff <(strip "$work/in_process/sweep.csv") <(strip "$work/slurm/sweep.csv"); 
 else
   echo "test-slurm: sweep.csv differs"; exit 1
 fi
+
+# Values a shell would run, and a sweep folder with a space and a quote in its name: each run is
+# one line of jobs.txt and one argument vector, so the array runs the values as titles and no
+# command of theirs.
+hostile="$work/it's a sweep"
+marker="$work/injected"
+"$plastica" sweep "$scene" --vary "scene.title=\"\$(touch $marker-1)\",\"; touch $marker-2\",\"\`touch $marker-3\`\"" \
+  -o "$hostile" --emit jobs > /dev/null
+job=$(sbatch --parsable "$hostile/sweep.sbatch")
+while squeue -h -j "$job" 2>/dev/null | grep -q .; do sleep 0.2; done
+if ls "$marker"-* > /dev/null 2>&1; then
+  echo "test-slurm: a sweep value ran as a command"; exit 1
+fi
+for id in r0001 r0002 r0003; do
+  grep -q '"status": "completed"' "$hostile/runs/$id/run.json" || { echo "test-slurm: hostile run $id did not complete"; cat "$hostile/logs/"*; exit 1; }
+done
+grep -qF '"title": "$(touch' "$hostile/runs/r0001/run.json" || { echo "test-slurm: the title is not the value given"; exit 1; }
+echo "test-slurm: values that a shell would run ran as text, from a folder with a space and a quote (3 tasks)"

@@ -153,7 +153,7 @@ TEST_CASE("A rerun keeps the user's files and the measured curve it is given", "
     CHECK(fs::exists(out / "chart.png"));
 }
 
-TEST_CASE("A second writer into a folder in use is refused naming the holder; a folder removed mid-run stops it", "[untrusted]") {
+TEST_CASE("A second writer into a folder in use is refused naming the holder, and a folder removed mid-run stops it", "[untrusted]") {
     const fs::path out = fresh_folder("concurrent") / "out";
     const Result both = shell("$PLASTICA run " + slow_ring + " -o " + out.string() + " & first=$!\n"
                               "while [ ! -f " + out.string() + "/vtu/step_000005.vtu ]; do sleep 0.02; done\n"
@@ -267,7 +267,7 @@ TEST_CASE("Device files and overflowing indices are refused as bad input", "[unt
     CHECK_THAT(index.output, Catch::Contains("not 18446744073709551617"));
 }
 
-TEST_CASE("SIGTERM while drawing exits 130 and leaves no temporary file; a stale one goes at the next drawing", "[untrusted]") {
+TEST_CASE("SIGTERM while drawing exits 130 and leaves no temporary file, and a stale one goes at the next drawing", "[untrusted]") {
     const fs::path out = fresh_folder("sigterm") / "out";
     const Result r = shell("$PLASTICA run " + model("ring_inelastic.toml") + " -o " + out.string() + " -q & run=$!\n"
                            "while [ ! -d " + out.string() + "/frames ]; do sleep 0.02; done\nsleep 0.3\n"

@@ -70,6 +70,31 @@ TEST_CASE("Rectangle: the fully plastic interaction is M/Mp = 1 − (N/Ny)²", "
     }
 }
 
+TEST_CASE("Rectangle of 4000 fibres (prefix sums): M/Mp = 1 − (N/Ny)² at the layers' boundaries, and 2Mp/n² between", "[section]") {
+    // Above direct_capacity_sum_limit the breakpoints come from prefix and suffix sums. Where N
+    // puts the axis on a boundary between layers the fibre capacity is exact; elsewhere within
+    // 2Mp/n² (the test above), 1.25e-7 Mp here.
+    constexpr int n = 4000;
+    static_assert(n > static_cast<int>(direct_capacity_sum_limit));
+    const FibreSection s = rectangle(n);
+    const double Ny = fy * b * h, Mp = fy * b * h * h / 4.0;
+    for (double share : {0.0, 0.25, 0.5, 0.75}) { // 0, 500, 1000 and 1500 layers past the middle
+        CAPTURE(share);
+        CHECK(s.moment_capacity(share * Ny, 1.0) == Approx(Mp * (1.0 - share * share)).epsilon(1e-12));
+        CHECK(s.moment_capacity(-share * Ny, -1.0) == Approx(Mp * (1.0 - share * share)).epsilon(1e-12));
+    }
+    CHECK(s.moment_capacity(0.3337 * Ny, 1.0) == Approx(Mp * (1.0 - 0.3337 * 0.3337)).margin(2.0 * Mp / (n * n)));
+    // The hinge's smooth curve passes through the polygon's corners.
+    CHECK(s.hinge_moment_capacity(0.5 * Ny, 1.0) == Approx(0.75 * Mp).epsilon(1e-9));
+}
+
+TEST_CASE("Sections of the same fibres share one capacity, and other fibres get their own", "[section]") {
+    const FibreSection a = rectangle(3000), b_ = rectangle(3000), c = rectangle(3001);
+    CHECK(&a.hinge_capacity(1.0) == &b_.hinge_capacity(1.0));
+    CHECK(&a.hinge_capacity(1.0) != &c.hinge_capacity(1.0));
+    CHECK(c.moment_capacity(0.0, 1.0) == Approx(fy * b * h * h / 4.0).epsilon(1e-6));
+}
+
 TEST_CASE("Unequal fibres: the plastic capacity is exact between its corners, both signs", "[section]") {
     // Fibres A = 1, 1, 2 at y = −1, 0, +1 with fy = 1 (M = −Σ σ A y). Worked by hand: with the
     // neutral axis through a fibre, that fibre's stress balances N and the others sit at ±fy.

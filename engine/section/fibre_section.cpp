@@ -9,40 +9,12 @@
 
 namespace plastica {
 
-namespace {
-
-struct Point2 {
-    double n, m;
-};
-
-// Counter-clockwise convex hull (monotone chain), collinear points dropped.
-std::vector<Point2> convex_hull(std::vector<Point2> points) {
-    std::sort(points.begin(), points.end(),
-              [](const Point2& a, const Point2& b) { return a.n < b.n || (a.n == b.n && a.m < b.m); });
-    auto cross = [](const Point2& o, const Point2& a, const Point2& b) {
-        return (a.n - o.n) * (b.m - o.m) - (a.m - o.m) * (b.n - o.n);
-    };
-    if (points.size() < 3) return points;
-    std::vector<Point2> hull(2 * points.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 1e-13) --k;
-        hull[k++] = points[i];
-    }
-    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 1e-13) --k;
-        hull[k++] = points[i];
-    }
-    hull.resize(k - 1);
-    return hull;
-}
-
-} // namespace
 
 FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
     const SteelSpec& steel = *spec.steel;
     E_ = steel.E;
     // Stiffness and capacity from each fibre's own material.
+    fibres_.reserve(spec.fibres.size());
     for (const Fibre& f : spec.fibres) {
         MaterialHolder material(make_material(steel, f.residual_stress));
         const double E = material->elastic_modulus();
@@ -52,10 +24,12 @@ FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
         ny_tension_ += fibres_.back().limit_tension * f.area;
         ny_compression_ += fibres_.back().limit_compression * f.area;
     }
-    build_capacity_curves();
+    std::vector<CapacityFibre> limits;
+    limits.reserve(fibres_.size());
+    for (const SectionFibre& f : fibres_) limits.push_back({f.area, f.y, f.limit_tension, f.limit_compression});
+    capacity_ = section_capacity(limits);
     force_scale_ = ny_tension_;
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
-    build_hinge_capacity();
 }
 
 SectionResponse FibreSection::set_trial_deformation(double eps0, double curvature) {
@@ -150,89 +124,9 @@ void FibreSection::revert() {
     phi_t_ = phi_c_;
 }
 
-void FibreSection::build_capacity_curves() {
-    // Fully plastic state: with positive bending the fibres below the neutral axis are in
-    // tension (+fy) and those above in compression (−fy); the fibre the axis crosses carries
-    // whatever stress balances N. As that fibre's stress runs from −fy to +fy, N and M both
-    // change linearly, so M_p(N) is exactly the polyline through the states where the axis
-    // lies between two fibres: breakpoint k has the k lowest fibres on the "below" side.
-    std::vector<std::size_t> order(fibres_.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fibres_[a].y < fibres_[b].y; });
-    for (int side = 0; side < 2; ++side) {
-        const double below_sign = side == 0 ? 1.0 : -1.0;
-        std::vector<CapacityPoint>& curve = capacity_[side];
-        curve.clear();
-        const std::size_t n = order.size();
-        const auto contribution = [&](std::size_t m, double sign) {
-            const SectionFibre& f = fibres_[order[m]];
-            const double s = sign * (sign > 0.0 ? f.limit_tension : f.limit_compression);
-            return CapacityPoint{s * f.area, -s * f.area * f.y};
-        };
-        if (n <= direct_capacity_sum_limit) {
-            // Each breakpoint summed over the fibres in order.
-            for (std::size_t k = 0; k <= n; ++k) {
-                CapacityPoint p;
-                for (std::size_t m = 0; m < n; ++m) {
-                    const CapacityPoint c = contribution(m, m < k ? below_sign : -below_sign);
-                    p.N += c.N;
-                    p.M += c.M;
-                }
-                curve.push_back(p);
-            }
-        } else {
-            // A prefix and a suffix sum: O(n) instead of O(n²), so that a section of 10⁵ fibres
-            // is set up in milliseconds, not minutes. The breakpoints agree with the sums above
-            // to round-off.
-            std::vector<CapacityPoint> below(n + 1), above(n + 1);
-            for (std::size_t m = 0; m < n; ++m) {
-                const CapacityPoint c = contribution(m, below_sign);
-                below[m + 1] = {below[m].N + c.N, below[m].M + c.M};
-            }
-            for (std::size_t m = n; m-- > 0;) {
-                const CapacityPoint c = contribution(m, -below_sign);
-                above[m] = {above[m + 1].N + c.N, above[m + 1].M + c.M};
-            }
-            for (std::size_t k = 0; k <= n; ++k) curve.push_back({below[k].N + above[k].N, below[k].M + above[k].M});
-        }
-        std::sort(curve.begin(), curve.end(), [](const CapacityPoint& a, const CapacityPoint& b) { return a.N < b.N; });
-    }
-}
-
-void FibreSection::build_hinge_capacity() {
-    // The fibres' capacity polygon (convex hull of both curves' breakpoints): its upper chain
-    // carries positive bending, its lower chain negative; each becomes a smooth curve.
-    std::vector<Point2> points;
-    for (const auto& curve : capacity_)
-        for (const CapacityPoint& c : curve) points.push_back({c.N, c.M});
-    const std::vector<Point2> hull = convex_hull(points);
-    if (hull.empty()) return;
-    std::size_t lowest = 0, highest = 0;
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-        if (hull[i].n < hull[lowest].n) lowest = i;
-        if (hull[i].n > hull[highest].n) highest = i;
-    }
-    // Counter-clockwise: from the lowest N to the highest runs the lower chain, back the upper.
-    for (int side = 0; side < 2; ++side) {
-        std::vector<double> N, M;
-        const std::size_t from = side == 0 ? highest : lowest;
-        const std::size_t to = side == 0 ? lowest : highest;
-        for (std::size_t i = from;; i = (i + 1) % hull.size()) {
-            N.push_back(hull[i].n);
-            M.push_back(std::abs(hull[i].m));
-            if (i == to) break;
-        }
-        if (side == 0) {
-            std::reverse(N.begin(), N.end());
-            std::reverse(M.begin(), M.end());
-        }
-        hinge_capacity_[side] = CapacityCurve(std::move(N), std::move(M));
-    }
-}
-
 double FibreSection::moment_capacity(double N, double sign) const {
     if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
-    const std::vector<CapacityPoint>& curve = capacity_[sign > 0.0 ? 0 : 1];
+    const std::vector<CapacityPoint>& curve = capacity_->polyline[sign > 0.0 ? 0 : 1];
     const auto upper = std::upper_bound(curve.begin() + 1, curve.end() - 1, N,
                                         [](double n, const CapacityPoint& p) { return n < p.N; });
     const CapacityPoint& a = *(upper - 1);

@@ -7,6 +7,7 @@
 
 #include "material/uniaxial_material.hpp"
 #include "section/capacity_curve.hpp"
+#include "section/section_capacity.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -60,7 +61,7 @@ public:
     // Every (N, M) the fibres can carry at their limit stresses is a convex polygon (a sum of
     // one segment per fibre). The plastic hinge's capacity: the smooth curve through its
     // breakpoints, for positive (sign > 0) and negative bending.
-    const CapacityCurve& hinge_capacity(double sign) const { return hinge_capacity_[sign > 0.0 ? 0 : 1]; }
+    const CapacityCurve& hinge_capacity(double sign) const { return capacity_->hinge[sign > 0.0 ? 0 : 1]; }
     double hinge_moment_capacity(double N, double sign) const { return hinge_capacity(sign).at(N).moment; }
     double axial_capacity_tension() const { return ny_tension_; }
     double axial_capacity_compression() const { return ny_compression_; }
@@ -85,21 +86,8 @@ private:
     SectionResponse set_trial(double eps0, double curvature);
     SectionSpec spec_; // kept to rebuild an unstressed copy
     std::vector<SectionFibre> fibres_; // all of one law (make_material of the section's steel)
-    // M_p(N) as a polyline per bending sign (index 0 positive), ordered by N; it is exact
-    // for fibres and runs at every hinge evaluation.
-    struct CapacityPoint {
-        double N = 0.0;
-        double M = 0.0;
-    };
-    // Up to this many fibres the capacity breakpoints are summed whole, each on its own (the
-    // results every verification was made with; the hinge's curve keeps the breakpoints that
-    // round-off leaves off a straight line, so another order of summation moves results by up to
-    // 0.15 % on a portal); above it by prefix sums, which cost O(n) instead of O(n²).
-    static constexpr std::size_t direct_capacity_sum_limit = 2048;
-    void build_capacity_curves();
-    std::array<std::vector<CapacityPoint>, 2> capacity_;
-    std::array<CapacityCurve, 2> hinge_capacity_;
-    void build_hinge_capacity();
+    // M_p(N) and the hinge's curves, shared by every section of the same fibres.
+    std::shared_ptr<const SectionCapacity> capacity_;
     double E_ = 0.0;
     double ea0_ = 0.0, ei0_ = 0.0;
     double ny_tension_ = 0.0, ny_compression_ = 0.0;

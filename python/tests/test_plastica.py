@@ -161,3 +161,28 @@ def test_curve_as_a_dataframe(source):
     frame = r.dataframe()
     assert isinstance(frame, pandas.DataFrame)
     assert frame["load"].tolist() == r.curve["load"].tolist()
+
+
+def test_eight_threads_writing_one_folder_leave_one_runs_files(source, tmp_path):
+    # The folder is one writer's own while it writes: the others are refused, naming the holder,
+    # and what is there afterwards is one run's series, whole.
+    result = plastica.run(str(source / "models" / "ring_elastic.toml"))
+    folder = tmp_path / "out"
+    start = threading.Barrier(8)
+
+    def write(_):
+        start.wait()
+        try:
+            result.write(str(folder))
+            return "written"
+        except RuntimeError as e:
+            return str(e)
+
+    with concurrent.futures.ThreadPoolExecutor(8) as pool:
+        outcomes = list(pool.map(write, range(8)))
+    assert outcomes.count("written") >= 1
+    for refused in (o for o in outcomes if o != "written"):
+        assert "is in use by process" in refused and "a Python Result.write" in refused
+    rows = (folder / "curve.csv").read_text().splitlines()
+    assert len(rows) == len(result.curve["load"]) + 1
+    assert len(list((folder / "vtu").glob("step_*.vtu"))) == len(result.curve["load"])
