@@ -4,6 +4,8 @@
 #include "options.hpp"
 #include "default_folder.hpp"
 
+#include "atomic_file.hpp"
+
 #include "png_file.hpp"
 #include "render_error.hpp"
 #include "scene_error.hpp"
@@ -20,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace plastica::cli {
 
@@ -69,8 +72,9 @@ int study_command(const Args& args) {
     const fs::path folder = vm.count("output") ? fs::path(vm["output"].as<std::string>()) : fs::path(default_output_folder(model.name)) / "study";
     fs::create_directories(folder);
 
-    std::ofstream csv(folder / "study.csv");
+    std::ostringstream csv;
     write_study_csv(csv, report);
+    write_file_atomically((folder / "study.csv").string(), csv.str());
     print_study_table(std::cout, model.name, report, !o.methods.empty());
     try {
         render::write_png(render::draw_chart(render::study_chart(model.name, report)), (folder / "study.png").string());
@@ -80,8 +84,9 @@ int study_command(const Args& args) {
     }
     std::cout << "-> " << (folder / "study.csv").string() << ", " << (folder / "study.png").string();
     if (!report.limits.empty()) {
-        std::ofstream limits(folder / "limits.csv");
+        std::ostringstream limits;
         write_limits_csv(limits, report);
+        write_file_atomically((folder / "limits.csv").string(), limits.str());
         std::cout << ", " << (folder / "limits.csv").string();
     }
     std::cout << "\n";

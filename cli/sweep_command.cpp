@@ -291,6 +291,9 @@ int merge_command(const Args& args) {
     } catch (const StudyError& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;
+    } catch (const WriteError& e) {
+        std::cerr << "plastica: " << e.what() << "\n";
+        return stopped_early;
     } catch (const std::exception& e) {
         // A folder of elsewhere: a file too large, behind a link, or unreadable.
         std::cerr << "plastica: " << vm["folder"].as<std::string>() << ": " << e.what() << "\n";

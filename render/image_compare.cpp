@@ -22,9 +22,10 @@ std::string dims_text(const int d[3]) { return std::to_string(d[0]) + "x" + std:
 
 std::set<std::string> pngs_under(const fs::path& folder) {
     std::set<std::string> names;
+    // Regular files only, never through a symbolic link: a folder from elsewhere is read inside itself.
     for (const auto& entry : fs::recursive_directory_iterator(folder))
-        if (entry.is_regular_file() && entry.path().extension() == ".png")
-            names.insert(fs::relative(entry.path(), folder).generic_string());
+        if (entry.symlink_status().type() == fs::file_type::regular && entry.path().extension() == ".png")
+            names.insert(entry.path().lexically_relative(folder).generic_string());
     return names;
 }
 

@@ -3,6 +3,7 @@
 #include "curve_error.hpp"
 #include "study_error.hpp"
 
+#include "atomic_file.hpp"
 #include "bounded_file.hpp"
 #include "safe_names.hpp"
 
@@ -269,7 +270,7 @@ SweepPlan sample_plan(const std::vector<SampledKey>& keys, int runs, std::uint64
 
 void write_plan(const std::string& dir, const SweepPlan& plan) {
     fs::create_directories(dir);
-    std::ofstream out(fs::path(dir) / "plan.csv");
+    std::ostringstream out;
     out << "id";
     for (const std::string& k : plan.keys) out << ',' << csv_field(k);
     out << '\n';
@@ -278,7 +279,7 @@ void write_plan(const std::string& dir, const SweepPlan& plan) {
         for (const std::string& v : plan.values[r]) out << ',' << csv_field(v);
         out << '\n';
     }
-    if (!out) throw StudyError(dir + "/plan.csv: cannot write");
+    write_file_atomically((fs::path(dir) / "plan.csv").string(), out.str());
 }
 
 SweepPlan read_plan(const std::string& dir) {
@@ -356,14 +357,14 @@ void write_jobs(const std::string& dir, const std::string& program, const std::s
         if (!is_plain_name(plan.ids[r])) throw StudyError("run id '" + plan.ids[r] + "' is not a plain name");
     }
     fs::create_directories(fs::path(dir) / "logs");
-    std::ofstream jobs(fs::path(dir) / "jobs.txt");
+    std::ostringstream jobs;
     for (std::size_t r = 0; r < plan.ids.size(); ++r) {
         jobs << quoted_for_shell(program);
         for (const std::string& a : run_arguments(scene, dir, plan, r, output)) jobs << ' ' << quoted_for_shell(a);
         // Its messages where the in-process pool puts them, so merge can say why a run failed.
         jobs << " > " << quoted_for_shell((fs::absolute(dir) / "logs" / (plan.ids[r] + ".txt")).string()) << " 2>&1\n";
     }
-    std::ofstream sbatch(fs::path(dir) / "sweep.sbatch");
+    std::ostringstream sbatch;
     const std::string logs = (fs::absolute(dir) / "logs").string();
     sbatch << "#!/bin/bash\n"
            << "# A Slurm job array over jobs.txt: task N runs line N. Submit with: sbatch "
@@ -374,13 +375,14 @@ void write_jobs(const std::string& dir, const std::string& program, const std::s
            << "#SBATCH --output=\"" << logs << "/slurm-%a.txt\"\n"
            << "line=$(sed -n \"${SLURM_ARRAY_TASK_ID}p\" " << quoted_for_shell(fs::absolute(fs::path(dir) / "jobs.txt").string()) << ")\n"
            << "eval \"$line\"\n";
-    if (!jobs || !sbatch) throw StudyError(dir + ": cannot write jobs.txt or sweep.sbatch");
+    write_file_atomically((fs::path(dir) / "jobs.txt").string(), jobs.str());
+    write_file_atomically((fs::path(dir) / "sweep.sbatch").string(), sbatch.str());
 }
 
 SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& at) {
     const SweepPlan plan = read_plan(dir);
     SweepSummary summary;
-    std::ofstream out(fs::path(dir) / "sweep.csv");
+    std::ostringstream out;
     out.precision(10);
     out << "id";
     for (const std::string& k : plan.keys) out << ',' << csv_field(k);
@@ -438,7 +440,7 @@ SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& 
         }
         out << ',' << record->iterations << ',' << record->steps << ',' << record->seconds << '\n';
     }
-    if (!out) throw StudyError(dir + "/sweep.csv: cannot write");
+    write_file_atomically((fs::path(dir) / "sweep.csv").string(), out.str());
     return summary;
 }
 
