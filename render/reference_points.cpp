@@ -1,6 +1,8 @@
 #include "reference_points.hpp"
 #include "render_error.hpp"
 
+#include "bounded_file.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -33,8 +35,12 @@ ReferencePoints read_reference_points(const std::string& file_and_label) {
         points.label = file_and_label.substr(colon + 1);
     }
     if (points.label.empty()) points.label = std::filesystem::path(file).stem().string();
-    std::ifstream in(file);
-    if (!in) throw RenderError(file + ": cannot read the reference points (--overlay-csv FILE:label)");
+    std::istringstream in;
+    try {
+        in.str(read_bounded_file(file, result_file_limit));
+    } catch (const FileReadError& e) {
+        throw RenderError(std::string(e.what()) + ": cannot read the reference points (--overlay-csv FILE:label)");
+    }
     std::string line;
     bool header_seen = false;
     for (int number = 1; std::getline(in, line); ++number) {
@@ -48,7 +54,8 @@ ReferencePoints read_reference_points(const std::string& file_and_label) {
         } else if (points.displacement.empty() && !header_seen) {
             header_seen = true; // the column names
         } else {
-            throw RenderError(file + ":" + std::to_string(number) + ": expected 'displacement, load' as two numbers, got '" + line + "'");
+            throw RenderError(file + ":" + std::to_string(number) + ": expected 'displacement, load' as two numbers, got '" +
+                              line.substr(0, 200) + "'");
         }
     }
     if (points.displacement.empty()) throw RenderError(file + ": no points (expected lines of 'displacement, load')");
