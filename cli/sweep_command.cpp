@@ -17,6 +17,7 @@
 #include "render_error.hpp"
 #include "sweep_charts.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -26,6 +27,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <spawn.h>
 #include <sstream>
 #include <sys/wait.h>
@@ -83,6 +85,20 @@ pid_t launch(const std::string& program, const std::vector<std::string>& args, c
     const int error = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     return error == 0 ? pid : -1;
+}
+
+// The values of key k that a sweep's check reads the scene with: every distinct one of a grid, the
+// smallest and largest of a sample.
+std::vector<std::string> values_to_check(const SweepPlan& plan, std::size_t k, bool sampled) {
+    std::vector<std::string> values;
+    std::set<std::string> seen;
+    for (const std::vector<std::string>& run : plan.values)
+        if (seen.insert(run[k]).second) values.push_back(run[k]);
+    if (!sampled || values.size() <= 2) return values;
+    const auto number = [](const std::string& v) { return std::strtod(v.c_str(), nullptr); };
+    const auto [low, high] = std::minmax_element(values.begin(), values.end(),
+                                                 [&](const std::string& a, const std::string& b) { return number(a) < number(b); });
+    return {*low, *high};
 }
 
 // The charts of the runs that finished (drawn by the render stage from the results).
@@ -194,10 +210,18 @@ int sweep_command(const Args& args) {
             }
             plan = grid_plan(lists, vm.count("zip") > 0);
         }
-        // The keys must exist and take such values: check the first run before starting any.
+        // The keys must exist and take such values: before any run starts (or a job is written),
+        // the scene is read with each value a grid gives each key (a sample's smallest and
+        // largest), the other keys at the first run's values.
         std::vector<Override> first;
         for (std::size_t k = 0; k < plan.keys.size(); ++k) first.push_back({plan.keys[k], plan.values.front()[k]});
         read_scene(scene, first);
+        for (std::size_t k = 0; k < plan.keys.size(); ++k)
+            for (const std::string& value : values_to_check(plan, k, vm.count("sample") > 0)) {
+                std::vector<Override> one = first;
+                one[k].value = value;
+                read_scene(scene, one);
+            }
     } catch (const SceneError& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;

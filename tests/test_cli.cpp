@@ -513,6 +513,24 @@ TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes,
     CHECK_THAT(jobs[2], Catch::StartsWith("r0002,20,-1,failed,") && Catch::Contains("--set material[steel].fy"));
 }
 
+TEST_CASE("A sweep with a bad value anywhere in its lists starts no run and writes no job", "[cli][sweep]") {
+    const fs::path dir = fs::temp_directory_path() / ("plastica_sweep_checked_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const char* mode : {"", " --emit jobs"}) {
+        const Result r = command("sweep " + model("ring_elastic.toml") + " --vary analysis.scheme=displacement_control,bogus" +
+                                 " --vary analysis.increment=1,2 -o " + dir.string() + mode);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains("got 'bogus'"));
+        CHECK_FALSE(fs::exists(dir / "runs"));
+        CHECK_FALSE(fs::exists(dir / "jobs.txt"));
+    }
+    // A sample's extremes are checked too: a lognormal fy can never be negative, a normal one can.
+    const Result sampled = command("sweep " + model("ring_inelastic.toml") + " --sample 'material[steel].fy=normal:100:1000' --samples 50 --seed 1 -o " +
+                                   dir.string() + " --emit jobs");
+    CHECK(sampled.code == 2);
+    CHECK_THAT(sampled.output, Catch::Contains("material[steel].fy"));
+}
+
 TEST_CASE("A sampled sweep draws the distribution of its peak load", "[cli][sweep]") {
     const fs::path dir = scratch("sample");
     const Result s = command("sweep " + model("ring_inelastic.toml") + " --sample material[steel].fy=uniform:30000:40000" +
