@@ -155,7 +155,9 @@ int run_command(const Args& args) {
         o.force = vm.count("force") > 0;
         o.keep_step_files = !vm.count("curves-only");
         o.inputs = render_options.overlays;
-        o.inputs.insert(o.inputs.end(), render_options.reference_points.begin(), render_options.reference_points.end());
+        for (const std::string& points : render_options.reference_points) // FILE or FILE:label
+            o.inputs.push_back(std::filesystem::exists(points) || points.rfind(':') == std::string::npos ? points
+                                                                                                       : points.substr(0, points.rfind(':')));
         o.inputs.push_back(scene_file);
         o.holder = "plastica run " + scene_file;
         output_folder.emplace(folder, std::move(o));
