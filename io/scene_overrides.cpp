@@ -105,9 +105,16 @@ std::string apply(toml::table& root, const Override& o) {
             if (chosen >= list->size())
                 fail(o, "the scene has " + std::to_string(list->size()) + " [[" + s.key + "]] table(s), not " + s.selector);
         } else {
+            std::vector<std::string> names;
             for (std::size_t i = 0; i < list->size(); ++i)
-                if (const toml::table* t = (*list)[i].as_table(); t && (*t)["name"].value_or(std::string()) == s.selector) chosen = i;
-            if (chosen == list->size()) fail(o, "no [[" + s.key + "]] named '" + s.selector + "'");
+                if (const toml::table* t = (*list)[i].as_table()) {
+                    names.push_back((*t)["name"].value_or(std::string()));
+                    if (names.back() == s.selector) chosen = i;
+                }
+            if (chosen == list->size()) {
+                const std::string near = nearest_key(s.selector, names);
+                fail(o, "no [[" + s.key + "]] named '" + s.selector + "'" + (near.empty() ? std::string() : "; did you mean '" + near + "'?"));
+            }
         }
         table = (*list)[chosen].as_table();
         if (!table) fail(o, "[[" + s.key + "]] " + s.selector + " is not a table");

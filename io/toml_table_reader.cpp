@@ -68,6 +68,14 @@ const KeySpec& TomlTableReader::declared(const std::string& key) const {
 }
 
 void TomlTableReader::missing(const KeySpec& k, const char* what) const {
+    // A misspelt key is the likelier mistake than a forgotten one: named first, at its own line.
+    const std::vector<std::string> known = spec_.key_names(group_);
+    for (auto&& [name, value] : table_) {
+        const std::string key(name.str());
+        if (std::find(known.begin(), known.end(), key) == known.end() && nearest_key(key, {k.name}) == k.name)
+            throw SceneError(file_, plastica::line_of(value), qualified(key),
+                             "unknown key; did you mean '" + k.name + "'? (missing required key '" + k.name + "', " + what + ")");
+    }
     fail("", "missing required key '" + k.name + "' (" + what + ")");
 }
 

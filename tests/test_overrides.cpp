@@ -58,6 +58,7 @@ TEST_CASE("A bad override is named in its error", "[scene][overrides]") {
     CHECK(error_of({"analysis[1].increment=2"}) == "--set analysis[1].increment: [analysis] is one table, not a list");
     CHECK(error_of({"section[ring].diameter=2"}).find("section[ring].diameter") != std::string::npos);
     CHECK(error_of({"material[iron].fy=2"}) == "--set material[iron].fy: no [[material]] named 'iron'");
+    CHECK(error_of({"material[stel].fy=2"}) == "--set material[stel].fy: no [[material]] named 'stel'; did you mean 'steel'?");
     CHECK(error_of({"material[3].fy=2"}) == "--set material[3].fy: the scene has 1 [[material]] table(s), not 3");
     CHECK(error_of({"foundation[1].ky=abc def"}) ==
           "--set foundation[1].ky: cannot read 'abc def' as a TOML value (quote strings with spaces)");

@@ -86,6 +86,13 @@ TEST_CASE("A text with a NUL or a control character, or longer than 1024 bytes, 
     CHECK(scene_message(with_title(std::string(1024, 'x'))).empty());
 }
 
+TEST_CASE("A misspelt required key is named at its own line, not reported as missing", "[scene]") {
+    std::string text = bar;
+    const std::string key = "I = 1.0";
+    text.replace(text.find(key), key.size(), "I_ = 1.0");
+    CHECK_THAT(scene_message(text), Catch::Contains("bad.toml:16") && Catch::Contains("'section[1].I_': unknown key; did you mean 'I'?"));
+}
+
 TEST_CASE("An override's index of any length is refused without overflow", "[untrusted]") {
     for (const char* index : {"18446744073709551617", "99999999999999999999999999", "0"}) {
         try {
