@@ -63,8 +63,9 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
             run->model = is_text ? read_scene_text(source, name.empty() ? "scene" : name, run->overrides)
                                  : read_scene(source, run->overrides);
         } catch (const SceneError& e) {
-            // A dict has no lines: its errors name the key path alone.
-            if (is_text && name.empty()) throw SceneError(e.key().empty() ? "scene" : e.key(), 0, "", e.reason());
+            // A dict has no lines: its errors name the key path alone; an override's, the override.
+            const bool names_override = e.file().rfind("--set ", 0) == 0;
+            if (is_text && name.empty() && !names_override) throw SceneError(e.key().empty() ? "scene" : e.key(), 0, "", e.reason());
             throw;
         }
         run->scene_file = is_text ? (name.empty() ? "(dict)" : name) : source;

@@ -50,7 +50,7 @@ OutputGroup member_force_arrays() {
                 {name::axial_force, Where::cell, Type::float64, 1, Quantity::force, When::always, "N, positive in tension"},
                 {name::moment_i, Where::cell, Type::float64, 1, Quantity::moment, When::always, "bending moment EI·dθ/ds at the first node"},
                 {name::moment_j, Where::cell, Type::float64, 1, Quantity::moment, When::always, "bending moment at the second node"},
-                {name::shear, Where::cell, Type::float64, 1, Quantity::force, When::always, "(M_i + M_j)/L of the basic end moments"},
+                {name::shear, Where::cell, Type::float64, 1, Quantity::force, When::always, "(moment_j − moment_i)/L, the reported end moments over the current length"},
                 {name::released, Where::cell, Type::int32, 1, Quantity::none, When::releases, "moment releases: 1 at the first node, 2 at the second, 3 at both"},
             },
             fill_member_forces};

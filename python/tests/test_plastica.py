@@ -91,6 +91,10 @@ def test_scene_errors_are_located(source):
         plastica.run('[scene]\nname = "x"\nbogus = 1\n')
     with pytest.raises(plastica.SceneError, match=r"--set material\[steel\]\.fy: expected a positive number"):
         plastica.run(source / "models/ring_inelastic.toml", overrides={"material[steel].fy": -1.0})
+    # From a dict too, an override's error names the override.
+    ring = tomllib.loads((source / "models/ring_inelastic.toml").read_text())
+    with pytest.raises(plastica.SceneError, match=r"^--set material\[steel\]\.fy: expected a positive number"):
+        plastica.run(ring, overrides={"material[steel].fy": -1.0})
 
 
 def test_runs_release_the_gil_and_run_on_threads(source):
@@ -130,6 +134,14 @@ def test_cantilever_from_a_dict_meets_its_closed_form():
     assert r.status == "completed", r.reason
     tip = r.step(-1).point["displacement"][-1]
     assert tip[1] == pytest.approx(-load * L**3 / (3 * EI), rel=1e-4)
+    # The shear is (moment_j − moment_i)/L of the reported end moments, and equals the tip load
+    # in every element; the moment grows linearly from the tip to P·L at the clamp (a hogging
+    # moment, negative in the reported convention).
+    cells = r.step(-1).cell
+    element = L / 10
+    assert cells["shear"] == pytest.approx((cells["moment_j"] - cells["moment_i"]) / element, rel=1e-4)
+    assert np.abs(cells["shear"]) == pytest.approx(load, rel=1e-4)
+    assert abs(cells["moment_i"][0]) == pytest.approx(load * L, rel=1e-4)
 
 
 def test_chart_and_pictures(source, tmp_path):
