@@ -19,14 +19,15 @@ SectionPath most_loaded_end(const ResultSeries& series) {
         for (int k = 0; k < 2; ++k)
             if (use[k]->GetComponent(e, 0) > most) most = use[k]->GetComponent(e, 0), element = e, end = k;
     SectionPath path;
-    path.where = "element " + std::to_string(element + 1) + ", end " + (end == 0 ? "i" : "j");
+    // Counted from 0, as ParaView's cell ids and Python's arrays count.
+    path.where = "element " + std::to_string(element) + " (from 0), end " + (end == 0 ? "i" : "j");
     const char* moment = end == 0 ? result::name::moment_i : result::name::moment_j;
     for (const SeriesStep& step : series.steps) {
         auto grid = read_step(step.file);
         vtkDataArray* n = grid->GetCellData()->GetArray(result::name::axial_force);
         vtkDataArray* m = grid->GetCellData()->GetArray(moment);
         if (!n || !m || element >= n->GetNumberOfTuples())
-            throw RenderError(step.file + ": no 'axial_force' or '" + moment + "' for element " + std::to_string(element + 1));
+            throw RenderError(step.file + ": no 'axial_force' or '" + moment + "' for element " + std::to_string(element) + " (from 0)");
         path.axial_force.push_back(n->GetComponent(element, 0));
         path.moment.push_back(m->GetComponent(element, 0));
     }
