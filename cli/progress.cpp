@@ -24,19 +24,18 @@ Progress::~Progress() { finish(); }
 
 void Progress::update(int count, double done, const std::string& status) {
     const auto now = std::chrono::steady_clock::now();
-    if (!terminal_) {
-        if (count % every_ == 0) std::cerr << what_ << ": " << status << "\n";
-        return;
-    }
     // Redrawn at most ten times a second: a fast run is not slowed by its own display.
-    if (open_ && now - last_ < std::chrono::milliseconds(100)) return;
+    if (terminal_ && open_ && now - last_ < std::chrono::milliseconds(100)) return;
+    if (!terminal_ && count % every_ != 0) return;
     last_ = now;
-    std::string line = what_ + " ";
-    if (done >= 0.0) {
-        const double share = std::fmax(0.0, std::fmin(done, 1.0));
+    const double share = std::fmax(0.0, std::fmin(done, 1.0));
+    std::string line = what_ + (terminal_ ? " " : ": ");
+    if (done >= 0.0 && terminal_) {
         constexpr int width = 24;
         const int filled = static_cast<int>(std::lround(share * width));
         line += "[" + std::string(filled, '#') + std::string(width - filled, '-') + "] ";
+    }
+    if (done >= 0.0) {
         char percent[16];
         std::snprintf(percent, sizeof percent, "%3.0f %%  ", 100.0 * share);
         line += percent;
@@ -44,6 +43,11 @@ void Progress::update(int count, double done, const std::string& status) {
     line += status;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     if (done > 0.02 && done < 1.0) line += "  about " + duration_text(elapsed * (1.0 - done) / done) + " left";
+    // In a log each update is a line of its own, with the same share and estimate.
+    if (!terminal_) {
+        std::cerr << line << "\n";
+        return;
+    }
     std::cerr << "\r\033[K" << line << std::flush;
     open_ = true;
 }

@@ -1,6 +1,7 @@
 // Progress of a long run or render on stderr. On a terminal: one line redrawn in place (a bar
 // when the share done is known, the step, what it is doing, and an estimate of the time left).
-// Elsewhere (CI logs, files): a plain line every `every` updates, nothing redrawn.
+// Elsewhere (CI logs, files): a plain line every `every` updates with the share done and the
+// estimate, nothing redrawn.
 #pragma once
 
 #include <chrono>

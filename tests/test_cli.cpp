@@ -575,7 +575,9 @@ TEST_CASE("Progress goes to a log as plain lines, without a terminal's redrawing
     const fs::path out = scratch("progress");
     const Result r = command("run " + model("ring_elastic.toml") + " -o " + out.string() + " --no-render");
     CHECK(r.code == 0);
-    CHECK_THAT(r.output, Catch::Contains("solving: step 20  P ") && Catch::Contains("top displacement 10"));
+    // Step 20 of 200 to the target displacement of 100: 10 % done, with the time left.
+    CHECK_THAT(r.output, Catch::Contains("solving:  10 %  step 20  P ") && Catch::Contains("top displacement 10"));
+    CHECK_THAT(r.output, Catch::Contains(" left\n"));
     CHECK(r.output.find('\r') == std::string::npos);
     CHECK(r.output.find("\033[K") == std::string::npos);
 }
