@@ -11,6 +11,7 @@
 #include "scene_error.hpp"
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
+#include "step_dataset.hpp"
 #include "study_error.hpp"
 #include "sweep.hpp"
 
@@ -119,6 +120,7 @@ void draw_charts(const std::string& dir, const std::string& scene_file, bool sam
         charts.scene = model.name;
         charts.load_label = model.report.load_label;
         charts.displacement_label = model.report.displacement_label;
+        std::tie(charts.load_unit, charts.displacement_unit) = reported_units(model);
     } catch (const SceneError&) {
         // The scene moved or changed: the charts keep generic labels.
     }

@@ -15,8 +15,8 @@ std::string compound(const std::string& a, const char* op, const std::string& b)
     return a + op + b;
 }
 
-// The units of the reported load (a force, a moment, a pressure, or none for the load factor)
-// and of the control displacement (a length, or radians for a rotation).
+} // namespace
+
 std::pair<std::string, std::string> reported_units(const Model& m) {
     const std::string& force = m.report.force_unit;
     const std::string& length = m.report.length_unit;
@@ -34,7 +34,6 @@ std::pair<std::string, std::string> reported_units(const Model& m) {
     return {load, m.reported_control().dof == 2 ? "rad" : length};
 }
 
-} // namespace
 
 StepDataset::StepDataset(const Model& model) : model_(&model) {
     const auto [load_unit, displacement_unit] = reported_units(model);

@@ -10,8 +10,14 @@
 
 #include <set>
 #include <string>
+#include <utility>
 
 namespace plastica {
+
+// The units of the reported load (a force, a moment, a pressure, or none for the load factor)
+// and of the control displacement (a length, or radians for a rotation), from the scene's
+// [units] or [report]; empty where it names none.
+std::pair<std::string, std::string> reported_units(const Model& m);
 
 class StepDataset {
 public:

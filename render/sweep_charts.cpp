@@ -3,6 +3,7 @@
 #include "charts.hpp"
 #include "figure_text.hpp"
 #include "png_file.hpp"
+#include "series_summary.hpp"
 
 #include <vtkImageData.h>
 
@@ -45,7 +46,7 @@ std::vector<std::string> draw_sweep_charts(const SweepCharts& c, const std::stri
     if (distinct.size() > 8) distinct = {distinct.front(), distinct.back()};
     const std::vector<std::string> labels = distinct_numbers(distinct);
     ChartFigure family{c.scene + ": " + std::to_string(c.runs.size()) + " runs, coloured by " + c.keys.front(),
-                       c.displacement_label, c.load_label, {}, true};
+                       with_unit(c.displacement_label, c.displacement_unit), with_unit(c.load_label, c.load_unit), {}, true};
     std::vector<bool> named(distinct.size(), false);
     for (const SweepChartRun& r : c.runs) {
         const double t = hi > lo && std::isfinite(r.values.front()) ? (r.values.front() - lo) / (hi - lo) : 0.5;
@@ -64,7 +65,8 @@ std::vector<std::string> draw_sweep_charts(const SweepCharts& c, const std::stri
         for (const SweepChartRun& r : c.runs)
             if (std::isfinite(r.values[k]) && std::isfinite(r.peak_load)) dots.x.push_back(r.values[k]), dots.y.push_back(r.peak_load);
         if (dots.x.empty()) continue;
-        ChartFigure peak{c.scene + ": peak " + c.load_label + " against " + c.keys[k], c.keys[k], "peak " + c.load_label, {dots}, false};
+        ChartFigure peak{c.scene + ": peak " + c.load_label + " against " + c.keys[k], c.keys[k],
+                         with_unit("peak " + c.load_label, c.load_unit), {dots}, false};
         peak.axes_through_zero = false;
         save(peak, "peak_" + std::to_string(k + 1) + ".png");
     }
@@ -91,7 +93,7 @@ std::vector<std::string> draw_sweep_charts(const SweepCharts& c, const std::stri
         cdf.y.push_back(static_cast<double>(i + 1) / peaks.size());
     }
     ChartFigure distribution{c.scene + ": peak " + c.load_label + ", n = " + std::to_string(peaks.size()) + " runs",
-                             "peak " + c.load_label, "share of runs", {histogram, cdf}, true};
+                             with_unit("peak " + c.load_label, c.load_unit), "share of runs", {histogram, cdf}, true};
     distribution.axes_through_zero = false;
     save(distribution, "peak_distribution.png");
     return written;

@@ -16,6 +16,7 @@ struct SweepChartRun {
 
 struct SweepCharts {
     std::string scene, load_label = "load", displacement_label = "control displacement";
+    std::string load_unit, displacement_unit; // from the scene's [units] or [report]; empty: none
     std::vector<std::string> keys;
     std::vector<SweepChartRun> runs; // finished runs only
     bool sampled = false;
