@@ -471,8 +471,15 @@ TEST_CASE("run --set overrides scene keys and run.json records them", "[cli][ove
 TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes, and matches GNU Parallel", "[cli][sweep]") {
     const fs::path dir = scratch("sweep");
     const std::string base = "sweep " + model("ring_inelastic.toml") + " --vary analysis.target_displacement=20" +
-                             " --vary 'material[steel].fy=20000,-1,36518' --at 10,20 -j 2 -o ";
-    // fy = -1 is refused by its run (exit 2): reported as failed, the others complete.
+                             " --vary 'material[steel].fy=20000,30000,36518' --at 10,20 -j 2 -o ";
+    // Values are checked before any run starts (a bad one refuses the sweep); a run can still
+    // fail where it runs: here the second run's folder is a file, so that run exits 2 and is
+    // reported as failed, with the first line of its log, while the others complete.
+    const auto block_second_run = [&](const fs::path& sweep) {
+        fs::create_directories(sweep / "runs");
+        std::ofstream(sweep / "runs" / "r0002") << "in the way";
+    };
+    block_second_run(dir / "pool");
     const Result r = command(base + (dir / "pool").string());
     CHECK(r.code == 3);
     CHECK_THAT(r.output, Catch::Contains("3 runs, 2 completed, 0 stopped early, 1 failed, 0 missing"));
@@ -489,7 +496,7 @@ TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes,
     REQUIRE(pool.size() == 4u);
     CHECK(pool[0] == "id,analysis.target_displacement,material[steel].fy,status,reason,peak_load,peak_displacement,load_at_10,load_at_20,iterations,steps,seconds");
     CHECK(pool[1].rfind("r0001,20,20000,completed,target displacement reached,", 0) == 0);
-    CHECK_THAT(pool[2], Catch::StartsWith("r0002,20,-1,failed,") && Catch::Contains("--set material[steel].fy: expected a positive number"));
+    CHECK_THAT(pool[2], Catch::StartsWith("r0002,20,30000,failed,") && Catch::Contains("exists and is not a folder"));
     CHECK(pool[3].rfind("r0003,20,36518,completed,", 0) == 0);
     // Resume: a lost run is run again, the finished ones are kept.
     fs::remove_all(dir / "pool" / "runs" / "r0003");
@@ -498,6 +505,7 @@ TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes,
     CHECK(rows(dir / "pool" / "sweep.csv")[3].rfind("r0003,20,36518,completed,", 0) == 0);
     // The same sweep as jobs for GNU Parallel, then merged: the same table but for the timings.
     CHECK(command(base + (dir / "jobs").string() + " --emit jobs").code == 0);
+    block_second_run(dir / "jobs");
     CHECK(fs::exists(dir / "jobs" / "sweep.sbatch"));
     CHECK(std::system(("parallel --will-cite -j 2 < " + (dir / "jobs" / "jobs.txt").string() + " > /dev/null 2>&1").c_str()) != -1);
     const Result merged = command("merge " + (dir / "jobs").string() + " --at 10,20");
@@ -510,7 +518,7 @@ TEST_CASE("A sweep runs its variants in a pool, survives a failing one, resumes,
         const std::string b = jobs[k].substr(0, jobs[k].rfind(',', jobs[k].rfind(',') - 1));
         CHECK(a == b);
     }
-    CHECK_THAT(jobs[2], Catch::StartsWith("r0002,20,-1,failed,") && Catch::Contains("--set material[steel].fy"));
+    CHECK_THAT(jobs[2], Catch::StartsWith("r0002,20,30000,failed,") && Catch::Contains("exists and is not a folder"));
 }
 
 TEST_CASE("A sweep with a bad value anywhere in its lists starts no run and writes no job", "[cli][sweep]") {
