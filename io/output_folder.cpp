@@ -37,7 +37,11 @@ bool is_temporary(const std::string& name) {
     return std::regex_match(name, temporary);
 }
 
-bool is_bookkeeping(const std::string& relative) { return relative == manifest_file_name || relative == lock_file_name; }
+// A manifest or a lock, of this folder or of a folder inside it (plastica section's own).
+bool is_bookkeeping(const std::string& relative) {
+    const std::string name = fs::path(relative).filename().string();
+    return name == manifest_file_name || name == lock_file_name;
+}
 
 // Every entry below the folder (symbolic links listed, never followed), as relative paths.
 std::vector<std::pair<std::string, fs::file_status>> entries_below(const std::string& folder) {
