@@ -124,6 +124,19 @@ TEST_CASE("Section names become file names inside the output folder", "[untruste
     CHECK_FALSE(fs::exists(fs::temp_directory_path().parent_path() / "escaped_capacity.csv"));
 }
 
+TEST_CASE("Section curves of millions of fibres are announced, and refused where they would take many minutes", "[untrusted]") {
+    const fs::path dir = fresh_folder("section_work");
+    std::string scene = read(model("gallery/portal_frame.toml"));
+    const std::string anchor = "residual_stress = 0.3\n";
+    REQUIRE(scene.find(anchor) != std::string::npos);
+    scene.replace(scene.find(anchor), anchor.size(), anchor + "flange_strips = 1000\nflange_layers = 1000\nweb_fibres = 10000\n");
+    write(dir / "fine.toml", scene);
+    const Result r = command("section " + (dir / "fine.toml").string() + " --points 1000 --no-charts -o " + (dir / "sections").string());
+    CHECK(r.code == 2);
+    CHECK_THAT(r.output, Catch::Contains("2010000 fibres × 1000 points would take about 15 min"));
+    CHECK_FALSE(fs::exists(dir / "sections" / "HEB300_capacity.csv"));
+}
+
 TEST_CASE("A link planted in an output folder is refused and what it points to is untouched", "[untrusted]") {
     const fs::path dir = fresh_folder("links");
     write(dir / "outside.txt", "keep me");
