@@ -57,12 +57,15 @@ void MeshBuilder::add_element(int a, int b, int section) {
 
 std::pair<int, int> MeshBuilder::add_member(const std::string& name, const std::vector<Point>& points, int section) {
     const int first = static_cast<int>(model_.elements.size());
+    const int member = static_cast<int>(model_.member_names.size());
+    model_.member_names.push_back(name);
     std::vector<int>& nodes = member_nodes_[name];
     int previous = shared_node(points.front()[0], points.front()[1]);
     nodes.push_back(previous);
     for (std::size_t k = 1; k < points.size(); ++k) {
         const int next = shared_node(points[k][0], points[k][1]); // a full circle closes on its first node
         add_element(previous, next, section);
+        model_.elements.back().member = member;
         member_elements_[name].push_back(static_cast<int>(model_.elements.size()) - 1);
         if (next != nodes.front()) nodes.push_back(next);
         previous = next;

@@ -56,6 +56,7 @@ bool present(const Array& a, const Model& m) {
     case When::staged: return !m.stages.empty();
     case When::releases: return m.has_releases();
     case When::self_contact: return !m.self_contact.empty();
+    case When::members: return !m.member_names.empty();
     case When::patterns: return !active_patterns(m).empty();
     case When::moving_base_patterns: return m.has_moving_base() && !active_patterns(m).empty();
     }
@@ -102,7 +103,8 @@ std::string markdown_table() {
                                       "distributed plasticity", "a half model (`mirror_x`)", "units named in `[report]`",
                                       "springs or a rigid base", "a moving base", "stages (`[[stage]]`)",
                                       "two or more load patterns", "a moving base and two or more load patterns",
-                                      "released member ends", "self-contact (`[[self_contact]]`)"};
+                                      "released member ends", "self-contact (`[[self_contact]]`)",
+                                      "members (`[[line]]`, `[[arc]]`)"};
     std::ostringstream out;
     out << "| array | where | type | components | unit | written for | meaning |\n"
         << "|---|---|---|---|---|---|---|\n";

@@ -39,6 +39,7 @@ enum class When {
     moving_base_patterns,    // base.vtp: a moving base, and more than one load pattern
     releases,                // a member end is released
     self_contact,            // [[self_contact]]
+    members,                 // [[line]]s or [[arc]]s (not only [[element]]s given one by one)
 };
 
 struct Array {
@@ -70,6 +71,10 @@ std::string markdown_table();
 // Names, so that a misspelt one does not compile instead of drawing nothing.
 namespace name {
 inline constexpr const char* displacement = "displacement";
+inline constexpr const char* node_id = "node_id";
+inline constexpr const char* element_id = "element_id";
+inline constexpr const char* member = "member";
+inline constexpr const char* member_names = "member_names";
 inline constexpr const char* rotation = "rotation";
 inline constexpr const char* initial_position = "initial_position";
 inline constexpr const char* bending_moment = "bending_moment";

@@ -654,13 +654,14 @@ TEST_CASE("Ctrl-C and SIGTERM stop a run cleanly: exit 130, valid series, run.js
 // A disk that fills up mid-run, as RLIMIT_FSIZE lets a test have one (the writes fail with
 // EFBIG where a full disk gives ENOSPC; both are the same failed write to plastica).
 TEST_CASE("A disk that fills mid-run stops it with exit 3: every output ends at the same step, no temporary files", "[cli][output]") {
-    // 8 kB: the first VTU cannot be written; 20 kB: curve.csv fills first (inelastic ring); the
-    // PVD fills first (elastic ring with arc-length times, whose entries are longer).
+    // 8 kB: the first VTU cannot be written; 24 kB: curve.csv fills first (inelastic ring, whose
+    // VTU files are 20.5 kB); 20 kB: the PVD fills first (elastic ring with arc-length times,
+    // whose entries are longer).
     struct Case {
         int kilobytes;
         std::string scene, extra, full_file;
     };
-    for (const Case& c : {Case{8, "ring_inelastic", "", "step_000000.vtu"}, Case{20, "ring_inelastic", "", "curve.csv"},
+    for (const Case& c : {Case{8, "ring_inelastic", "", "step_000000.vtu"}, Case{24, "ring_inelastic", "", "curve.csv"},
                           Case{20, "ring_elastic", "--time arc_length", "ring_elastic.pvd"}}) {
         CAPTURE(c.kilobytes, c.scene);
         const fs::path out = scratch("full_disk_" + c.scene + std::to_string(c.kilobytes));

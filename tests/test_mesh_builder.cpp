@@ -17,6 +17,10 @@ TEST_CASE("Members that meet share their node and a full circle closes on its fi
     CHECK(m.nodes.size() == 8u); // 5 + 4 with the corner shared
     CHECK(mesh.member_nodes().at("beam").front() == mesh.member_nodes().at("column").back());
     CHECK(mesh.member_elements().at("beam") == std::vector<int>{4, 5, 6});
+    // Each element knows its member, by its index in the scene's order of names (the VTU's
+    // `member` and `member_names`).
+    CHECK(m.member_names == std::vector<std::string>{"column", "beam"});
+    for (int e = 0; e < 7; ++e) CHECK(m.elements[static_cast<std::size_t>(e)].member == (e < 4 ? 0 : 1));
 
     Model ring;
     MeshBuilder ring_mesh(ring, 1000);

@@ -125,6 +125,8 @@ double engine_value(const std::string& array, const Series& s, const StepResult&
         return sum;
     };
     const auto end_state = [&](int end) { return static_cast<double>(static_cast<int>(r.elements[i].hinge[end].state)); };
+    if (array == name::node_id || array == name::element_id) return static_cast<double>(i);
+    if (array == name::member) return s.model.elements[i].member;
     if (array == name::displacement) return c < 2 ? r.displacement[3 * i + c] : 0.0;
     if (array == name::rotation) return r.displacement[3 * i + 2];
     if (array == name::initial_position) return c == 0 ? s.model.nodes[i].x : c == 1 ? s.model.nodes[i].y : 0.0;
@@ -228,12 +230,17 @@ TEST_CASE("Every shipped scene writes exactly the schema's arrays it needs, of t
             }
             const int components = a.components == 0 ? s.model.integration_points() : a.components;
             CHECK(read->GetNumberOfComponents() == components);
-            // Field data hold one value, but the pattern factors one per load pattern.
+            // Field data hold one value, but the pattern factors one per load pattern and the
+            // member names one per member.
             const vtkIdType tuples = a.where == result::Where::point  ? grid->GetNumberOfPoints()
                                      : a.where == result::Where::cell ? grid->GetNumberOfCells()
                                      : array == result::name::pattern_factors ? static_cast<vtkIdType>(result::active_patterns(s.model).size())
-                                                                      : 1;
+                                     : array == result::name::member_names    ? static_cast<vtkIdType>(s.model.member_names.size())
+                                                                              : 1;
             CHECK(read->GetNumberOfTuples() == tuples);
+            if (array == result::name::member_names)
+                for (vtkIdType t = 0; t < tuples; ++t)
+                    CHECK(vtkStringArray::SafeDownCast(read)->GetValue(t) == s.model.member_names[static_cast<std::size_t>(t)]);
             vtkDataArray* values = vtkDataArray::SafeDownCast(read);
             if (!values) continue;
             for (vtkIdType t = 0; t < values->GetNumberOfTuples(); ++t)

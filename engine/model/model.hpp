@@ -88,6 +88,7 @@ struct ElementSpec {
     int node_j = 0;
     int section = 0;
     std::array<bool, 2> released{false, false}; // moment releases at node_i, node_j (a pin in the member)
+    int member = -1; // index in Model::member_names; -1 for an element given on its own ([[element]])
 };
 
 // [[self_contact]]: the surfaces of these elements, at ± half their section's depth from the
@@ -229,6 +230,7 @@ struct Model {
     std::vector<Node> nodes;
     std::vector<SectionSpec> sections;
     std::vector<ElementSpec> elements;
+    std::vector<std::string> member_names; // the [[line]]s and [[arc]]s, in the scene's order
     std::vector<Support> supports;
     std::vector<NodalLoad> loads; // nodal loads, line loads and self weight lumped to nodes
     std::vector<ElementPressure> pressures;
