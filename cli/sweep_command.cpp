@@ -88,20 +88,6 @@ pid_t launch(const std::string& program, const std::vector<std::string>& args, c
     return error == 0 ? pid : -1;
 }
 
-// The values of key k that a sweep's check reads the scene with: every distinct one of a grid, the
-// smallest and largest of a sample.
-std::vector<std::string> values_to_check(const SweepPlan& plan, std::size_t k, bool sampled) {
-    std::vector<std::string> values;
-    std::set<std::string> seen;
-    for (const std::vector<std::string>& run : plan.values)
-        if (seen.insert(run[k]).second) values.push_back(run[k]);
-    if (!sampled || values.size() <= 2) return values;
-    const auto number = [](const std::string& v) { return std::strtod(v.c_str(), nullptr); };
-    const auto [low, high] = std::minmax_element(values.begin(), values.end(),
-                                                 [&](const std::string& a, const std::string& b) { return number(a) < number(b); });
-    return {*low, *high};
-}
-
 // The charts of the runs that finished (drawn by the render stage from the results).
 void draw_charts(const std::string& dir, const std::string& scene_file, bool sampled) {
     const SweepPlan plan = read_plan(dir);

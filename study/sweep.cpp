@@ -16,6 +16,7 @@
 #include <fstream>
 #include <optional>
 #include <random>
+#include <set>
 #include <sstream>
 
 namespace plastica {
@@ -160,6 +161,18 @@ void check_plan_text(const std::string& where, const std::string& text) {
 }
 
 } // namespace
+
+std::vector<std::string> values_to_check(const SweepPlan& plan, std::size_t k, bool sampled) {
+    std::vector<std::string> values;
+    std::set<std::string> seen;
+    for (const std::vector<std::string>& run : plan.values)
+        if (seen.insert(run[k]).second) values.push_back(run[k]);
+    if (!sampled || values.size() <= 2) return values;
+    const auto number = [](const std::string& v) { return std::strtod(v.c_str(), nullptr); };
+    const auto [low, high] = std::minmax_element(values.begin(), values.end(),
+                                                 [&](const std::string& a, const std::string& b) { return number(a) < number(b); });
+    return {*low, *high};
+}
 
 std::string quoted_for_shell(const std::string& s) {
     std::string out = "'";

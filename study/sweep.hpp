@@ -37,6 +37,10 @@ struct SampledKey {
 SampledKey parse_sample(const std::string& text); // throws StudyError naming the text
 SweepPlan sample_plan(const std::vector<SampledKey>& keys, int runs, std::uint64_t seed);
 
+// The values of key k that a sweep's check reads the scene with before it starts: every distinct
+// one of a grid, the smallest and largest of a sample.
+std::vector<std::string> values_to_check(const SweepPlan& plan, std::size_t k, bool sampled);
+
 void write_plan(const std::string& dir, const SweepPlan& plan);
 SweepPlan read_plan(const std::string& dir); // throws StudyError when there is none
 

@@ -292,6 +292,19 @@ TEST_CASE("Robustness matrix: frame, arch and beams complete past their peaks", 
     check_cases(part(true, false));
 }
 
+TEST_CASE("A sweep checks each distinct value of a grid, and a sample's extremes, before it starts", "[sweep]") {
+    const SweepPlan grid = grid_plan({{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}, false);
+    CHECK(values_to_check(grid, 0, false) == std::vector<std::string>{"1", "2"});
+    CHECK(values_to_check(grid, 1, false) == std::vector<std::string>{"x", "y", "z"});
+    const SweepPlan sample = sample_plan({parse_sample("a=normal:0:1")}, 200, 7);
+    const std::vector<std::string> ends = values_to_check(sample, 0, true);
+    REQUIRE(ends.size() == 2u);
+    for (const std::vector<std::string>& run : sample.values) {
+        CHECK(std::stod(run[0]) >= std::stod(ends[0]));
+        CHECK(std::stod(run[0]) <= std::stod(ends[1]));
+    }
+}
+
 TEST_CASE("A sweep's grid varies the first key slowest, and zipped lists run side by side", "[sweep]") {
     const SweepPlan grid = grid_plan({{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}, false);
     REQUIRE(grid.ids.size() == 6u);
