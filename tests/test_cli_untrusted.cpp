@@ -3,6 +3,8 @@
 // documented exit codes (2 bad input, 3 stopped early or output not written, 130 interrupted).
 #include "cli_helpers.hpp"
 
+#include "scratch_files.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -19,22 +21,9 @@ using cli_test::Result;
 
 namespace {
 
-fs::path fresh_folder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("plastica_hostile_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-void write(const fs::path& file, const std::string& text) {
-    fs::create_directories(file.parent_path());
-    std::ofstream(file, std::ios::binary) << text;
-}
-
-std::string read(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+fs::path fresh_folder(const std::string& name) { return scratch::fresh_folder("hostile_" + name); }
+using scratch::read;
+using scratch::write;
 
 // Shell text with $PLASTICA set to the program: for runs side by side and signals.
 cli_test::Result shell(const std::string& script) {

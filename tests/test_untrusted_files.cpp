@@ -9,6 +9,8 @@
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
 
+#include "scratch_files.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
@@ -23,22 +25,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_folder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("plastica_untrusted_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-void write(const fs::path& file, const std::string& text) {
-    fs::create_directories(file.parent_path());
-    std::ofstream(file) << text;
-}
-
-std::string read(const fs::path& file) {
-    std::ifstream in(file);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+fs::path fresh_folder(const std::string& name) { return scratch::fresh_folder("untrusted_" + name); }
+using scratch::read;
+using scratch::write;
 
 std::string scene_message(const std::string& text) {
     try {
