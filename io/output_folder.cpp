@@ -43,6 +43,18 @@ bool is_bookkeeping(const std::string& relative) {
     return name == manifest_file_name || name == lock_file_name;
 }
 
+// A temporary file Plastica makes: NAME.tmpPID… of a file it writes (a result of any scene's
+// name, a section's table or chart, a file its manifest lists). A user's "data.tmp2024" is not one.
+bool is_our_temporary(const std::string& relative, const std::set<std::string>& listed) {
+    const fs::path path(relative);
+    const std::string name = path.filename().string();
+    if (!is_temporary(name)) return false;
+    const std::string stem = name.substr(0, name.rfind(".tmp"));
+    const std::string of = (path.parent_path() / stem).generic_string();
+    static const std::regex any_scene(R"([A-Za-z0-9_-]+\.(pvd|gif)|[A-Za-z0-9_-]+_(capacity|moment_curvature)\.(csv|png))");
+    return listed.count(of) || is_known_result(of, "") || is_bookkeeping(of) || std::regex_match(of, any_scene);
+}
+
 // Every entry below the folder (symbolic links listed, never followed), as relative paths.
 std::vector<std::pair<std::string, fs::file_status>> entries_below(const std::string& folder) {
     std::vector<std::pair<std::string, fs::file_status>> out;
@@ -78,8 +90,10 @@ std::vector<std::string> read_manifest(const std::string& folder) {
 }
 
 void remove_stale_temporaries(const std::string& folder) {
+    const std::vector<std::string> manifest = read_manifest(folder);
+    const std::set<std::string> listed(manifest.begin(), manifest.end());
     for (const auto& [relative, status] : entries_below(folder))
-        if ((fs::is_regular_file(status) || fs::is_symlink(status)) && is_temporary(fs::path(relative).filename().string())) {
+        if ((fs::is_regular_file(status) || fs::is_symlink(status)) && is_our_temporary(relative, listed)) {
             std::error_code ec;
             fs::remove(fs::path(folder) / relative, ec);
         }

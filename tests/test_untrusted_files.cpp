@@ -215,12 +215,14 @@ TEST_CASE("A removed output folder is noticed, and stale temporaries are cleared
     const fs::path dir = fresh_folder("removed");
     write(dir / "run" / "frames" / "frame_000001.png.tmp12345", "left by a killed drawing");
     write(dir / "run" / "bar.gif.tmp999.rgb", std::string(1000, 'x'));
+    write(dir / "run" / "measurements.tmp2024", "the user's, named like a temporary");
     OutputFolderOptions o;
     o.scene_name = "bar";
     o.force = true;
     const OutputFolder run((dir / "run").string(), o);
     CHECK_FALSE(fs::exists(dir / "run" / "frames" / "frame_000001.png.tmp12345"));
     CHECK_FALSE(fs::exists(dir / "run" / "bar.gif.tmp999.rgb"));
+    CHECK(fs::exists(dir / "run" / "measurements.tmp2024"));
     CHECK(run.still_there());
     fs::remove_all(dir / "run");
     CHECK_FALSE(run.still_there());
