@@ -6,7 +6,6 @@
 
 #include "output_folder.hpp"
 
-#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -31,10 +30,6 @@ int render_command(const Args& args) {
     render_options.every = vm["every"].as<int>();
     render_options.quiet = vm.count("quiet") > 0;
     const std::string series = vm["series"].as<std::string>();
-    namespace fs = std::filesystem;
-    const std::string folder = !render_options.output.empty() ? render_options.output
-                               : fs::is_directory(series)         ? series
-                                                                  : fs::path(series).parent_path().string();
     // The pictures' folder is this drawing's own while it draws: a run or another drawing into
     // it is refused, and links where pictures go are too.
     std::optional<OutputFolder> lock;
@@ -42,7 +37,7 @@ int render_command(const Args& args) {
         OutputFolderOptions o;
         o.clear_results = false;
         o.holder = "plastica render " + series;
-        lock.emplace(folder.empty() ? std::string(".") : folder, std::move(o));
+        lock.emplace(pictures_folder(series, render_options), std::move(o));
     } catch (const OutputFolderError& e) {
         std::cerr << "plastica: " << e.what() << "\n";
         return bad_input;

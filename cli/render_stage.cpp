@@ -12,13 +12,17 @@
 
 namespace plastica::cli {
 
+std::string pictures_folder(const std::string& series, const render::RenderOptions& options) {
+    namespace fs = std::filesystem;
+    if (!options.output.empty()) return options.output;
+    const std::string folder = fs::is_directory(series) ? series : fs::path(series).parent_path().string();
+    return folder.empty() ? std::string(".") : folder;
+}
+
 int render_and_report(const std::string& series, const render::RenderOptions& options, std::vector<std::string>* notes) {
     // SIGINT and SIGTERM stop the drawing between frames; its temporary files go with it.
     const render::StopOnSignal stop_on_signal;
-    namespace fs = std::filesystem;
-    const std::string output = !options.output.empty() ? options.output
-                               : fs::is_directory(series)  ? series
-                                                           : fs::path(series).parent_path().string();
+    const std::string output = pictures_folder(series, options);
     try {
         render::RenderOptions with_progress = options;
         Progress progress("drawing", 25);

@@ -16,6 +16,8 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
 // The render options given on a command line that draws nothing (run --no-render or
 // --curves-only), each as a note saying so; `why` names the option that stops the drawing.
 std::vector<std::string> render_options_left_unused(const po::variables_map& vm, const std::string& why);
+// The folder a drawing of `series` (a result folder or its .pvd) writes into: -o, or the series'.
+std::string pictures_folder(const std::string& series, const render::RenderOptions& options);
 // Renders a series and says what was written; returns the exit code. Options that could not act
 // are said on stderr (quiet or not) and added to `notes` when given (run.json).
 int render_and_report(const std::string& series, const render::RenderOptions& options,

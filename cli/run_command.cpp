@@ -8,6 +8,7 @@
 #include "output_folder.hpp"
 #include "progress.hpp"
 #include "render_stage.hpp"
+#include "reference_points.hpp"
 
 #include "analysis/path_following.hpp"
 #include "curve_writer.hpp"
@@ -130,9 +131,9 @@ int run_command(const Args& args) {
         std::cerr << "plastica: " << scene_file << ": " << *why << "\n";
         return bad_input;
     }
-    if (fibre_states(model) > 1e6 && !vm.count("quiet"))
-        std::cerr << "plastica: setting up " << fibre_states(model) << " fibre states (about "
-                  << std::lround(fibre_states(model) * bytes_per_fibre_state / 1e6) << " MB)...\n";
+    if (const double states = fibre_states(model); states > 1e6 && !vm.count("quiet"))
+        std::cerr << "plastica: setting up " << states << " fibre states (about " << std::lround(states * bytes_per_fibre_state / 1e6)
+                  << " MB)...\n";
     std::optional<PathFollowing> analysis;
     try {
         analysis.emplace(model);
@@ -155,9 +156,7 @@ int run_command(const Args& args) {
         o.force = vm.count("force") > 0;
         o.keep_step_files = !vm.count("curves-only");
         o.inputs = render_options.overlays;
-        for (const std::string& points : render_options.reference_points) // FILE or FILE:label
-            o.inputs.push_back(std::filesystem::exists(points) || points.rfind(':') == std::string::npos ? points
-                                                                                                       : points.substr(0, points.rfind(':')));
+        for (const std::string& points : render_options.reference_points) o.inputs.push_back(render::reference_points_file(points));
         o.inputs.push_back(scene_file);
         o.holder = "plastica run " + scene_file;
         output_folder.emplace(folder, std::move(o));
@@ -213,14 +212,18 @@ int run_command(const Args& args) {
     // A step is written everywhere or nowhere: when the series cannot take it (a full disk),
     // its curve row is taken back, and the run stops with every output at the step before.
     double output_seconds = 0.0; // inside the writers, for run.json's split of the time
+    const auto folder_removed = [&] { return std::runtime_error("the output folder " + folder + " was removed or replaced during the run"); };
     auto write_step = [&](const StepResult& r) {
         const AddsElapsed timing(output_seconds);
-        if (!output_folder->still_there()) throw std::runtime_error("the output folder " + folder + " was removed or replaced during the run");
+        if (!output_folder->still_there()) throw folder_removed();
         curve(r);
         if (series) try {
                 (*series)(r);
             } catch (...) {
                 curve.take_back_last_row();
+                // A folder removed while the step was written is named as such, not as the file
+                // that could not be written in it.
+                if (!output_folder->still_there()) throw folder_removed();
                 throw;
             }
         track(r);

@@ -27,13 +27,8 @@ bool parse_pair(const std::string& line, double& x, double& y) {
 
 ReferencePoints read_reference_points(const std::string& file_and_label) {
     ReferencePoints points;
-    std::string file = file_and_label;
-    // The label follows the last colon, unless that colon belongs to the path itself.
-    const std::size_t colon = file_and_label.rfind(':');
-    if (colon != std::string::npos && !std::filesystem::exists(file_and_label)) {
-        file = file_and_label.substr(0, colon);
-        points.label = file_and_label.substr(colon + 1);
-    }
+    const std::string file = reference_points_file(file_and_label);
+    if (file.size() < file_and_label.size()) points.label = file_and_label.substr(file.size() + 1);
     if (points.label.empty()) points.label = std::filesystem::path(file).stem().string();
     std::istringstream in;
     try {
