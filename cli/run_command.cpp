@@ -221,9 +221,10 @@ int run_command(const Args& args) {
                 (*series)(r);
             } catch (...) {
                 curve.take_back_last_row();
-                // A folder removed while the step was written is named as such, not as the file
-                // that could not be written in it.
-                if (!output_folder->still_there()) throw folder_removed();
+                // A folder removed while the step was written (rm -r takes vtu/ before the
+                // folder itself) is named as such, not as the file that could not be written.
+                if (!output_folder->still_there() || !std::filesystem::is_directory(std::filesystem::path(folder) / "vtu"))
+                    throw folder_removed();
                 throw;
             }
         track(r);
