@@ -33,6 +33,13 @@ namespace plastica::cli {
 
 namespace {
 
+// The PVD's time: as asked, or for a scene in motion its own time unless asked otherwise.
+SeriesTime series_time(const std::string& asked, bool left_out, const Model& model) {
+    if (asked == "model" || (left_out && model.transient())) return SeriesTime::model;
+    return asked == "arc_length" ? SeriesTime::arc_length : SeriesTime::step;
+}
+
+
 std::atomic<bool> stop_requested{false};
 extern "C" void request_stop(int) { stop_requested = true; }
 
@@ -63,7 +70,7 @@ int run_command(const Args& args) {
          "KEY=VALUE: override a scene key by its path, e.g. material[steel].fy=250, analysis.increment=0.25 (repeatable)")
         ("output,o", po::value<std::string>(), "output folder (default out/<scene>)")
         ("every", po::value<int>()->default_value(1), "write every k-th step (first and last always)")
-        ("time", po::value<std::string>()->default_value("step"), "PVD time: step or arc_length")
+        ("time", po::value<std::string>()->default_value("step"), "PVD time: step, arc_length or model (a transient scene's time, its default)")
         ("compression", po::value<std::string>()->default_value("none"), "VTU compression: none (the fastest, default), lz4 or zlib; ParaView reads all three")
         ("no-render", "solve and write results only, draw nothing")
         ("curves-only", "write curve.csv and run.json only: no VTU series, no pictures (sweeps)")
@@ -93,8 +100,8 @@ int run_command(const Args& args) {
     render::RenderOptions render_options;
     if (auto code = read_render_options(vm, render_options)) return *code;
     const std::string time = vm["time"].as<std::string>();
-    if (every < 1 || (time != "step" && time != "arc_length")) {
-        std::cerr << "plastica: --every takes a whole number ≥ 1 and --time 'step' or 'arc_length'\n";
+    if (every < 1 || (time != "step" && time != "arc_length" && time != "model")) {
+        std::cerr << "plastica: --every takes a whole number ≥ 1 and --time 'step', 'arc_length' or 'model'\n";
         return bad_input;
     }
     const std::string compression = vm["compression"].as<std::string>();
@@ -173,7 +180,7 @@ int run_command(const Args& args) {
     std::optional<VtuSeriesWriter> series;
     if (!curves_only)
         series.emplace(model, folder,
-                       SeriesOptions{every, time == "step" ? SeriesTime::step : SeriesTime::arc_length,
+                       SeriesOptions{every, series_time(time, vm["time"].defaulted(), model),
                                      compression == "none" ? Compression::none
                                      : compression == "lz4" ? Compression::lz4 : Compression::zlib});
     RunReport report;

@@ -73,6 +73,10 @@ std::string curve_header(const Model& model) {
     if (!model.self_contact.empty()) header += ",surface_contacts,surface_contact_force";
     for (int p : result::active_patterns(model)) header += ",factor_" + model.patterns[static_cast<std::size_t>(p)];
     for (const std::string& name : reaction_columns(model)) header += ',' + name;
+    // Motion in time: the time and the energy accounts (EnergyTerms).
+    if (model.transient())
+        header += ",time,kinetic_energy,strain_energy,plastic_dissipation,damping_work,contact_work,external_work,"
+                  "ground_motion_work,energy_error";
     header += '\n';
     return header;
 }
@@ -94,6 +98,11 @@ std::string curve_row(const Model& model, const StepResult& r) {
     for (const SupportReaction& s : support_reactions(model, r))
         for (int d = 0; d < dofs_per_node; ++d)
             if (s.reported[d]) row << ',' << s.force[d];
+    if (model.transient()) {
+        const EnergyTerms& e = r.energy;
+        row << ',' << r.time << ',' << e.kinetic << ',' << e.strain << ',' << e.plastic << ',' << e.damping << ',' << e.contact
+            << ',' << e.external << ',' << e.ground << ',' << e.error;
+    }
     row << '\n';
     return row.text();
 }

@@ -17,6 +17,7 @@ const char* scheme_name(Scheme s) {
     case Scheme::load_control: return "load_control";
     case Scheme::displacement_control: return "displacement_control";
     case Scheme::arc_length: return "arc_length";
+    case Scheme::transient: return "transient";
     }
     return "";
 }

@@ -57,6 +57,7 @@ bool present(const Array& a, const Model& m) {
     case When::releases: return m.has_releases();
     case When::self_contact: return !m.self_contact.empty();
     case When::members: return !m.member_names.empty();
+    case When::transient: return m.transient();
     case When::patterns: return !active_patterns(m).empty();
     case When::moving_base_patterns: return m.has_moving_base() && !active_patterns(m).empty();
     }
@@ -86,6 +87,8 @@ std::string unit(const Array& a, const std::string& length, const std::string& f
     case Q::force: return force;
     case Q::moment: return force.empty() || length.empty() ? "" : force + "·" + length;
     case Q::curvature: return length.empty() ? "" : "1/" + length;
+    case Q::velocity: return length.empty() ? "" : length + "/s";
+    case Q::acceleration: return length.empty() ? "" : length + "/s²";
     case Q::none:
     case Q::reported_load:         // load_unit says it
     case Q::reported_displacement: // displacement_unit says it
@@ -97,14 +100,14 @@ std::string unit(const Array& a, const std::string& length, const std::string& f
 std::string markdown_table() {
     static const char* where_text[] = {"point", "cell", "field", "base.vtp cell"};
     static const char* type_text[] = {"Float64", "Int32", "String"};
-    static const char* quantity_text[] = {"", "length", "rad", "force", "force·length", "1/length", "load_unit", "displacement_unit"};
+    static const char* quantity_text[] = {"", "length", "rad", "force", "force·length", "1/length", "load_unit", "displacement_unit", "length/s", "length/s²"};
     static const char* when_text[] = {"always", "supports or prescribed displacements", "supports", "loads or pressure",
                                       "bilateral springs", "a rigid base or tensionless bed", "plastic hinges",
                                       "distributed plasticity", "a half model (`mirror_x`)", "units named in `[report]`",
                                       "springs or a rigid base", "a moving base", "stages (`[[stage]]`)",
                                       "two or more load patterns", "a moving base and two or more load patterns",
                                       "released member ends", "self-contact (`[[self_contact]]`)",
-                                      "members (`[[line]]`, `[[arc]]`)"};
+                                      "members (`[[line]]`, `[[arc]]`)", "a transient stage"};
     std::ostringstream out;
     out << "| array | where | type | components | unit | written for | meaning |\n"
         << "|---|---|---|---|---|---|---|\n";

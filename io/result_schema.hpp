@@ -19,7 +19,7 @@ namespace plastica::result {
 enum class Where { point, cell, field, base };
 enum class Type { float64, int32, text };
 // What an array's values measure, for their unit.
-enum class Quantity { none, length, rotation, force, moment, curvature, reported_load, reported_displacement };
+enum class Quantity { none, length, rotation, force, moment, curvature, reported_load, reported_displacement, velocity, acceleration };
 // Which scenes write an array: only what a scene needs (no empty arrays).
 enum class When {
     always,
@@ -40,6 +40,7 @@ enum class When {
     releases,                // a member end is released
     self_contact,            // [[self_contact]]
     members,                 // [[line]]s or [[arc]]s (not only [[element]]s given one by one)
+    transient,               // a stage integrates in time
 };
 
 struct Array {
@@ -71,6 +72,9 @@ std::string markdown_table();
 // Names, so that a misspelt one does not compile instead of drawing nothing.
 namespace name {
 inline constexpr const char* displacement = "displacement";
+inline constexpr const char* velocity = "velocity";
+inline constexpr const char* model_time = "model_time";
+inline constexpr const char* acceleration = "acceleration";
 inline constexpr const char* node_id = "node_id";
 inline constexpr const char* element_id = "element_id";
 inline constexpr const char* member = "member";

@@ -1,5 +1,7 @@
 #include "scene_reader.hpp"
 
+#include "dynamics_reader.hpp"
+
 #include "bounded_file.hpp"
 #include "member_geometry.hpp"
 #include "mesh_builder.hpp"
@@ -49,14 +51,16 @@ public:
         read_prescribed(top);
         read_foundations(top);
         read_self_contact(top);
+        read_dynamics(top, dynamics_context(), model_);
         check_released_moments();
         read_analysis(top);
         read_stages(top);
         read_report(top);
         top.finish();
-        if (!model_.loaded() && !model_.has_moving_base())
+        if (!model_.loaded() && !model_.has_moving_base() && !(model_.transient() && model_.dynamics.excites()))
             throw SceneError(file_, 1, "load",
-                             "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement and no moving base (base_motion)");
+                             "the scene has no [[load]], no [[distributed_load]], no [[prescribed]] displacement, no moving base "
+                             "(base_motion), and no [[ground_motion]] or [[initial_velocity]] for a transient stage");
         check_patterns_driven(top);
         return std::move(model_);
     }
@@ -199,6 +203,7 @@ private:
             else s.fibres.clear();
             s.name = name;
             s.mass_per_length = m->second.density * s.area;
+            s.rotary_inertia_per_length = m->second.density * s.inertia;
             r.finish();
             section_index_[name] = static_cast<int>(model_.sections.size());
             model_.sections.push_back(s);
@@ -644,7 +649,10 @@ private:
         for (std::size_t i = 0; i < list.size(); ++i) {
             TomlTableReader r(*list[i].first, file_, indexed("stage", i), scene_table("stage"), units());
             StageSpec s;
-            s.pattern = driven_pattern(r);
+            const bool transient = r.choice("scheme") == "transient";
+            // Patterns with a [[time_series]] follow it in a transient stage; the rest hold.
+            s.pattern = transient && !r.has("pattern") ? (model_.stages.empty() ? a.pattern : model_.stages.back().pattern)
+                                                       : driven_pattern(r);
             s.control = model_.stages.empty() ? a.control : model_.stages.back().control;
             if (r.has("control_at") || r.has("control_node")) {
                 s.control = read_control(r, s.pattern);
@@ -653,7 +661,17 @@ private:
                     if (r.has(key)) r.fail(key, "name the controlled point as well ('control_at' or 'control_node')");
             }
             const std::string scheme = r.choice("scheme");
-            s.scheme = scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
+            s.scheme = scheme == "load_control" ? Scheme::load_control
+                     : scheme == "transient" ? Scheme::transient : Scheme::displacement_control;
+            if (s.scheme == Scheme::transient) {
+                s.transient = read_transient(r);
+                check_transient_step(r, s.transient, model_);
+                r.finish();
+                model_.stages.push_back(s);
+                continue;
+            }
+            for (const char* key : {"time_step", "duration", "integrator", "alpha"})
+                if (r.has(key)) r.fail(key, "a key of scheme = \"transient\"");
             const Dimension controlled = control_dimension(s.control);
             s.increment = r.number("increment", s.scheme == Scheme::displacement_control ? controlled : dimension::none);
             s.adaptive = r.boolean("adaptive");
@@ -698,6 +716,10 @@ private:
         std::vector<bool> driven(model_.patterns.size(), false);
         driven[static_cast<std::size_t>(model_.analysis.pattern)] = true;
         for (const StageSpec& st : model_.stages) driven[static_cast<std::size_t>(st.pattern)] = true;
+        // In time, a pattern follows its series; from t = 0, every pattern acts.
+        if (model_.transient())
+            for (const TimeSeriesSpec& ts : model_.dynamics.series) driven[static_cast<std::size_t>(ts.pattern)] = true;
+        if (model_.analysis.scheme == Scheme::transient) std::fill(driven.begin(), driven.end(), true);
         for (std::size_t p = 0; p < driven.size(); ++p)
             if (!driven[p] && (model_.loaded(static_cast<int>(p)) || model_.has_moving_base(static_cast<int>(p))))
                 top.fail("stage", "load pattern '" + model_.patterns[p] +
@@ -707,6 +729,15 @@ private:
 
     std::string describe_node(int n) const { return mesh_.describe(n); }
 
+    SceneContext dynamics_context() {
+        SceneContext c;
+        c.file = file_;
+        c.units = units();
+        c.node_ref = [this](TomlTableReader& r) { return node_ref(r); };
+        c.members = &mesh_.member_elements();
+        return c;
+    }
+
     void read_analysis(TomlTableReader& top) {
         const toml::table* t = top.table("analysis");
         if (!t) top.fail("", "missing required table [analysis]");
@@ -714,7 +745,15 @@ private:
         AnalysisSpec& a = model_.analysis;
         const std::string scheme = r.choice("scheme");
         a.scheme = scheme == "arc_length" ? Scheme::arc_length
-                 : scheme == "load_control" ? Scheme::load_control : Scheme::displacement_control;
+                 : scheme == "load_control" ? Scheme::load_control
+                 : scheme == "transient" ? Scheme::transient : Scheme::displacement_control;
+        model_.dynamics.mass = r.choice("mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
+        if (a.scheme == Scheme::transient) {
+            read_transient_analysis(r);
+            return;
+        }
+        for (const char* key : {"time_step", "duration", "integrator", "alpha"})
+            if (r.has(key)) r.fail(key, "a key of scheme = \"transient\"");
         // Displacement control steps the controlled DOF; load control and arc length step λ.
         const Dimension controlled = r.choice("control_dof") == "rz" ? dimension::none : dimension::length;
         const Dimension step = a.scheme == Scheme::displacement_control ? controlled : dimension::none;
@@ -771,6 +810,29 @@ private:
             held[static_cast<std::size_t>(dofs_per_node * p.node + p.dof)] = true;
         if (std::all_of(held.begin(), held.end(), [](bool h) { return h; }))
             r.fail("", "every degree of freedom is supported or prescribed: nothing can move (see the [[support]] tables)");
+        r.finish();
+    }
+
+    // [analysis] scheme = "transient": the structure moves from rest (or its initial
+    // velocities) at t = 0; patterns with a [[time_series]] follow it, the others act at factor 1.
+    void read_transient_analysis(TomlTableReader& r) {
+        AnalysisSpec& a = model_.analysis;
+        a.transient = read_transient(r);
+        check_transient_step(r, a.transient, model_);
+        a.max_iterations = r.integer("max_iterations");
+        a.max_steps = std::max(r.integer("max_steps"), static_cast<int>(std::ceil(a.transient.duration / a.transient.time_step - 1e-9)) + 1);
+        a.residual_tolerance_follows_floor = !r.has("residual_tolerance");
+        a.residual_tolerance = r.number_or("residual_tolerance", AnalysisSpec::default_residual_tolerance);
+        a.displacement_tolerance = r.number("displacement_tolerance");
+        a.allow_crossing = r.boolean("allow_crossing");
+        a.pattern = r.has("pattern") ? driven_pattern(r) : 0;
+        if (r.has("control_at") || r.has("control_node")) {
+            a.control = read_control(r, a.pattern);
+        } else if (!model_.loads.empty()) {
+            a.control.node = model_.loads.front().node;
+        } else if (!model_.dynamics.initial_velocities.empty()) {
+            a.control.node = model_.dynamics.initial_velocities.front().node;
+        }
         r.finish();
     }
 

@@ -1,5 +1,7 @@
 #include "scene_schema.hpp"
 
+#include "dynamics_schema.hpp"
+
 #include "scene_reader.hpp"
 #include "section_shapes.hpp"
 
@@ -433,9 +435,9 @@ std::vector<KeySpec> control_keys(const std::string& point_default, const std::s
 TableSpec analysis_table_spec() {
     const std::string stepped = "a length (displacement control of ux, uy); else a pure number";
     TableSpec t{"analysis", false, "", {
-        one_of("scheme", {"arc_length", "load_control", "displacement_control"}).fallback(std::string("arc_length"))
-            .about("arc length is Crisfield's cylindrical"),
-        number("increment").positive().needed().dimension_follows(stepped).varied_in_studies()
+        one_of("scheme", {"arc_length", "load_control", "displacement_control", "transient"}).fallback(std::string("arc_length"))
+            .about("arc length is Crisfield's cylindrical; `transient` integrates in time (`time_step`, `duration`; docs/dynamics.md)"),
+        number("increment").positive().follows("required, except for `transient`").dimension_follows(stepped).varied_in_studies()
             .about("Δλ, the control DOF's Δu, or the arc length Δl of the first step"),
         number("min_increment").positive().follows("1e-6 × increment").dimension_follows(stepped)
             .about("the smallest adapted or cut increment; at most the first increment"),
@@ -466,15 +468,16 @@ TableSpec analysis_table_spec() {
                    "rolled into two turns)"),
     }};
     for (KeySpec& k : control_keys("the first load's node", "`\"uy\"`")) t.keys.push_back(k);
+    for (KeySpec& k : transient_keys(true)) t.keys.push_back(k);
     return t;
 }
 
 TableSpec stage_table_spec() {
     TableSpec t{"stage", true, "", {
         pattern_key("the load pattern the stage drives; every other keeps the factor it had"),
-        one_of("scheme", {"load_control", "displacement_control"}).fallback(std::string("load_control"))
-            .about("displacement control is of the stage's control DOF"),
-        number("increment").positive().needed().dimension_follows("a length (displacement control of ux, uy); else a pure number")
+        one_of("scheme", {"load_control", "displacement_control", "transient"}).fallback(std::string("load_control"))
+            .about("displacement control is of the stage's control DOF; `transient` integrates in time"),
+        number("increment").positive().follows("required, except for `transient`").dimension_follows("a length (displacement control of ux, uy); else a pure number")
             .about("|Δλ| or |Δu|; the sign follows the target"),
         flag("adaptive", false).about("adapt increments as in `[analysis]`"),
         number("target_load_factor").about("the stop of a load-controlled stage, any sign: `0.0` releases the load; exactly one stop is given"),
@@ -485,6 +488,7 @@ TableSpec stage_table_spec() {
         k.about(k.doc + "; left out, the previous stage's (or `[analysis]`'s); `control_dof` and `control_sign` need the point named too");
         t.keys.push_back(k);
     }
+    for (KeySpec& k : transient_keys(false)) t.keys.push_back(k);
     return t;
 }
 
@@ -513,10 +517,12 @@ TableSpec report_table_spec() {
 }
 
 std::vector<TableSpec> build_schema() {
-    return {scene_table_spec(), units_table_spec(), material_table_spec(), section_table_spec(), node_table_spec(),
+    std::vector<TableSpec> tables{scene_table_spec(), units_table_spec(), material_table_spec(), section_table_spec(), node_table_spec(),
             line_table_spec(), arc_table_spec(), element_table_spec(), support_table_spec(), load_table_spec(),
             distributed_load_table_spec(), prescribed_table_spec(), foundation_table_spec(), self_contact_table_spec(),
             analysis_table_spec(), stage_table_spec(), report_table_spec()};
+    for (TableSpec& t : dynamics_table_specs()) tables.push_back(std::move(t));
+    return tables;
 }
 
 } // namespace

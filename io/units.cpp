@@ -17,7 +17,7 @@ struct Unit {
 
 // SI prefixes are spelt out per unit: "Mm" (megametre) next to "mm" invites mistakes.
 constexpr double lbf = 4.4482216152605, inch = 0.0254;
-constexpr std::array<Unit, 21> units{{
+constexpr std::array<Unit, 22> units{{
     {"m", 1.0, dimension::length},
     {"mm", 1e-3, dimension::length},
     {"cm", 1e-2, dimension::length},
@@ -38,6 +38,7 @@ constexpr std::array<Unit, 21> units{{
     {"kg", 1.0, {-1, 1, 2}},
     {"t", 1e3, {-1, 1, 2}},
     {"s", 1.0, {0, 0, 1}},
+    {"ms", 1e-3, {0, 0, 1}},
     {"rad", 1.0, dimension::none}, // a rotational spring's "kN*m/rad"
 }};
 
@@ -126,8 +127,11 @@ std::string describe(Dimension d, bool with_example) {
         {dimension::mass_density, "a mass density", "7850 kg/m3"},
         {dimension::acceleration, "an acceleration", "-9.81 m/s2"},
         {dimension::none, "a pure number", nullptr},
-        {{-1, 1, 2}, "a mass", nullptr},
-        {{0, 0, 1}, "a time", nullptr},
+        {dimension::mass, "a mass, force·time²/length", "120 kg"},
+        {dimension::rotational_mass, "a rotational inertia, force·length·time²", nullptr},
+        {dimension::time, "a time", "0.01 s"},
+        {dimension::velocity, "a velocity", "2 m/s"},
+        {dimension::frequency, "a rate, 1/time", nullptr},
     };
     for (const Named& n : known)
         if (n.d == d) return std::string(n.what) + (with_example && n.example ? std::string(" (e.g. \"") + n.example + "\")" : "");

@@ -26,6 +26,11 @@ inline constexpr Dimension force_per_length{-1, 1, 0};   // a line load, a sprin
 inline constexpr Dimension stress{-2, 1, 0};             // also a spring per unit length
 inline constexpr Dimension mass_density{-4, 1, 2};
 inline constexpr Dimension acceleration{1, 0, -2};
+inline constexpr Dimension time{0, 0, 1};
+inline constexpr Dimension velocity{1, 0, -1};
+inline constexpr Dimension mass{-1, 1, 2};                // force·time²/length
+inline constexpr Dimension rotational_mass{1, 1, 2};     // force·length·time²
+inline constexpr Dimension frequency{0, 0, -1};
 } // namespace dimension
 
 // What a dimension is, for messages: "a stress, force/length²", with an example if asked

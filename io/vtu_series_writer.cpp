@@ -64,8 +64,23 @@ void VtuSeriesWriter::remove_earlier_steps() noexcept {
     earlier_steps_.clear();
 }
 
+namespace {
+double smallest_time_step(const Model& m) {
+    double dt = m.analysis.scheme == Scheme::transient ? m.analysis.transient.time_step : 0.0;
+    for (const StageSpec& s : m.stages)
+        if (s.scheme == Scheme::transient && (dt == 0.0 || s.transient.time_step < dt)) dt = s.transient.time_step;
+    return dt > 0.0 ? dt : 1.0;
+}
+} // namespace
+
 void VtuSeriesWriter::write_step(const StepResult& r) {
-    const double time = options_.time == SeriesTime::step ? static_cast<double>(r.step) : r.arc_length;
+    double time = options_.time == SeriesTime::step ? static_cast<double>(r.step)
+                : options_.time == SeriesTime::model ? r.time : r.arc_length;
+    // Static steps of a scene in time (gravity before the shaking) happen at one instant; the
+    // series needs increasing times, so each sits a millionth of a time step after the one before
+    // (the VTU's own `time` says when it is).
+    if (options_.time == SeriesTime::model && !entries_.empty() && time <= entries_.back().first)
+        time = entries_.back().first + 1e-6 * smallest_time_step(*model_);
     const XmlDataset grid = dataset_(r, time);
     const std::string step_name = step_file_name(r.step), file = "vtu/" + step_name;
     const std::string path = (fs::path(directory_) / file).string();

@@ -22,7 +22,8 @@
 
 namespace plastica {
 
-enum class SeriesTime { step, arc_length };
+// model: the model time of a transient scene (StepResult::time).
+enum class SeriesTime { step, arc_length, model };
 
 struct SeriesOptions {
     int every = 1;                  // write every k-th step (the first and last always)

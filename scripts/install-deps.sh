@@ -3,7 +3,7 @@
 # names given as arguments are added (`make fuzz` adds clang). It never removes a package:
 # apt-get runs with --no-remove, so a conflict stops the install with an explanation instead.
 set -euo pipefail
-packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libboost-program-options-dev zlib1g-dev liblz4-dev
+packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libspectra-dev libtomlplusplus-dev nlohmann-json3-dev libboost-program-options-dev zlib1g-dev liblz4-dev
           libvtk9-dev libpng-dev libosmesa6-dev libglew-dev fonts-dejavu-core catch2 libbenchmark-dev ffmpeg parallel
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-nbclient jupyter-nbconvert python3-ipykernel "$@")
 # One dpkg-query for all: the check runs before every make run.

@@ -103,7 +103,7 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"zero length line", replaced("end = [1.0, 0.0]", "end = [0.0, 0.0]"), "'line[1].end': a line needs a positive length", 13},
         {"load on missing node", replaced("at = [1.0, 0.0]", "at = [5.0, 5.0]"), "'load[1].at': no node at [5, 5]", 20},
         {"absurd size", replaced("elements = 2", "elements = 1000000000"), "expected a whole number from 1 to 1000000", 14},
-        {"bad scheme", replaced("scheme = \"load_control\"", "scheme = \"newton\""), "'analysis.scheme': expected one of 'arc_length', 'load_control', 'displacement_control', got 'newton'", 23},
+        {"bad scheme", replaced("scheme = \"load_control\"", "scheme = \"newton\""), "'analysis.scheme': expected one of 'arc_length', 'load_control', 'displacement_control', 'transient', got 'newton'", 23},
         {"missing stop", replaced("target_load_factor = 1.0\n", ""), "missing a stop", 22},
         {"bad DOF name", replaced("fix = [\"ux\", \"uy\", \"rz\"]", "fix = [\"ux\", \"uz\"]"), "expected 'ux', 'uy' or 'rz', got 'uz'", 18},
         {"TOML syntax", replaced("E = 1000.0", "E = = 1000.0"), "could not determine value type", 5},

@@ -72,6 +72,7 @@ std::unique_ptr<PathConstraint> make_path_constraint(Scheme scheme) {
     case Scheme::load_control: return std::make_unique<LoadControlPath>();
     case Scheme::displacement_control: return std::make_unique<DisplacementControlPath>();
     case Scheme::arc_length: return std::make_unique<ArcLengthPath>();
+    case Scheme::transient: break; // time integration follows no path (engine/dynamics/)
     }
     return std::make_unique<LoadControlPath>();
 }

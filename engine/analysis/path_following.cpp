@@ -5,6 +5,7 @@
 #include "analysis/plastic_sites.hpp"
 #include "analysis/stop_diagnosis.hpp"
 #include "analysis/structure_problem.hpp"
+#include "dynamics/modal_analysis.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -34,6 +35,7 @@ PathFollowing::PathFollowing(const Model& model)
         if (p.pattern == factors_.driven) ubar_[dofs_per_node * p.node + p.dof] = p.value;
     const DofRef& c = model.analysis.control;
     control_equation_ = system_.equation(dofs_per_node * c.node + c.dof);
+    if (model.transient()) stepper_ = std::make_unique<TimeStepper>(model_, system_);
 }
 
 void PathFollowing::drive_pattern(int pattern) {
@@ -77,6 +79,13 @@ const StepResult& PathFollowing::make_result(int step, int iterations, Acceptanc
     r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
+    // A scene in time reports every step's time; a static step's motion is none.
+    if (stepper_) {
+        r.time = stepper_->time();
+        r.velocity.assign(u_.size(), 0.0);
+        r.acceleration.assign(u_.size(), 0.0);
+        r.energy = {};
+    }
     system_.report(u_, system_.external_force(lambda_), r, with_sections);
     if (model_.report.measure == ReportSpec::Measure::platen) {
         r.load = 0.0;
@@ -197,6 +206,8 @@ NewtonResult PathFollowing::attempt_step(double h, const RunControl& control, co
 }
 
 std::string PathFollowing::initial_mechanism() {
+    // A structure in motion from the start is held by its inertia: a free body may fly.
+    if (model_.analysis.scheme == Scheme::transient) return {};
     return unloaded_mechanism(model_, system_, solver_, u_, ubar_, lambda_);
 }
 
@@ -214,6 +225,12 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
     RunSummary summary;
     try {
         return run_steps(observers, control, summary);
+    } catch (const ModalError& e) {
+        // Damping by modal ratios needs the modes where the first transient stage starts.
+        summary.status = RunStatus::no_convergence;
+        summary.reason = std::string("the damping's modes: ") + e.what();
+        summary.steps = step_;
+        return summary;
     } catch (const std::bad_alloc&) {
         summary.status = RunStatus::out_of_memory;
         std::ostringstream why;
@@ -242,6 +259,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     };
     auto finish = [&](int steps) {
         summary.steps = steps;
+        if (stepper_) summary.time = stepper_->time();
         summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return summary;
     };
@@ -251,11 +269,21 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     };
 
     // Step 0: the unloaded state (springs evaluated so the contact set is known).
+    if (stepper_) {
+        system_.evaluate(u_, ubar_, lambda_, false);
+        stepper_->note_initial_tangent();
+        if (model_.analysis.scheme == Scheme::transient) set_factors_at(0.0);
+    }
     system_.evaluate(u_, ubar_, lambda_, false);
     system_.commit();
     committed_contact_ = touching_bases(system_);
     initial_flexibility_ = load_flexibility();
-    if (!publish(make_result(0, 0, Acceptance::none, control.report_sections))) return finish(0);
+    // A scene in motion from the start: step 0 is its state at t = 0, velocities and energies too.
+    const bool starts_in_time = stepper_ && model_.analysis.scheme == Scheme::transient;
+    if (starts_in_time) stepper_->begin_stage(model_.analysis.transient, u_, lambda_, solver_);
+    make_result(0, 0, Acceptance::none, control.report_sections);
+    if (starts_in_time) stepper_->fill(u_, result_);
+    if (!publish(result_)) return finish(0);
     path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
 
     // The current stage's settings (the sequence updates them in place at each new stage).
@@ -267,6 +295,23 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     while (step_ < stage.max_steps) {
         if (control.interrupt && control.interrupt->load()) {
             stop({RunStatus::interrupted, "interrupted"});
+            break;
+        }
+        if (stage.scheme == Scheme::transient) {
+            const bool begun = starts_in_time && stages_.number() == 1;
+            if (const std::optional<StopReason> stopped = run_transient_stage(publish, control, summary, begun)) {
+                if (stopped->status == RunStatus::output_failed) return finish(step_ - 1);
+                stop(*stopped);
+                break;
+            }
+            if (stages_.has_next()) {
+                h = begin_next_stage();
+                continue;
+            }
+            std::ostringstream reason;
+            reason << "duration reached (t = " << stepper_->time() << ")";
+            if (stages_.number() > 1) reason << " (" << stages_.number() << " stages)";
+            stop({RunStatus::completed, reason.str()});
             break;
         }
         const double step_h = constraint_->landing(h, position(), stage);

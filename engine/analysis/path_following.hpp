@@ -12,11 +12,14 @@
 #include "analysis/step_result.hpp"
 #include "analysis/stop_diagnosis.hpp"
 #include "analysis/structural_system.hpp"
+#include "dynamics/structure_modes.hpp"
+#include "dynamics/time_stepper.hpp"
 #include "model/model.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/newton_solver.hpp"
 
 #include <atomic>
+#include <functional>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -68,6 +71,9 @@ public:
     std::string initial_mechanism();
 
     const StructuralSystem& system() const { return system_; }
+    // The natural modes at the committed state (after run(), where it stopped), with hinges,
+    // fibres and contacts in their states (dynamics/structure_modes.hpp).
+    ModalResult modes(int count);
     const std::vector<IterationTrace>& trace() const { return trace_; }
 
 private:
@@ -94,6 +100,17 @@ private:
     std::optional<StopReason> limit_on_plateau(double step_h);
     // The next stage drives its pattern under its constraint; returns its first increment.
     double begin_next_stage();
+    // A transient stage, from its start to its duration (analysis/transient_stage.cpp): each
+    // step is published; a step that fails is cut and retaken. Returns the stop if it ends the
+    // run early; publish is run_steps' own. begun: the stepper has begun it (at step 0).
+    std::optional<StopReason> run_transient_stage(const std::function<bool(const StepResult&)>& publish,
+                                                  const RunControl& control, RunSummary& summary, bool begun);
+    // The patterns' factors at time t: those with a [[time_series]] follow it.
+    void set_factors_at(double t);
+    // One transient step of dt, cut in halves (up to ten times) until it converges; the time
+    // step it took, or 0 where none converged.
+    double advance_in_time(double dt, const RunControl& control, RunSummary& summary, NewtonResult& outcome);
+    std::unique_ptr<TimeStepper> stepper_; // for a scene with a transient stage
     // Where the current state lies: its load factor, controlled displacement and arc length,
     // and its place along the path in the current constraint's parameter.
     PathPosition position() const;

@@ -25,6 +25,12 @@ double StageSequence::begin_next(double load_factor, const Eigen::VectorXd& u) {
     current_.target_load_factor = s.target_load_factor;
     current_.target_displacement = s.target_displacement;
     current_.pattern = s.pattern;
+    current_.transient = s.transient;
+    if (s.scheme == Scheme::transient) {
+        current_.target_load_factor.reset();
+        current_.target_displacement.reset();
+        return 0.0;
+    }
     const double value = s.target_load_factor ? load_factor : control_value(u);
     const double target = s.target_load_factor ? *s.target_load_factor : *s.target_displacement;
     const double previous_direction = direction_;

@@ -36,6 +36,15 @@ struct SurfaceContactResult {
     std::array<double, 2> force{0.0, 0.0}; // on the node; its segment takes the opposite
 };
 
+// A transient step's energy accounts since the first transient stage began (Hughes, The
+// Finite Element Method, 1987, ch. 9): each work is the trapezoidal sum of its force over the
+// displacement increments. strain: the elastic energy the members would give back unloading
+// (½ qᵀ f_elastic q of their end forces); plastic: the members' work less the change of it.
+struct EnergyTerms {
+    double kinetic = 0.0, strain = 0.0, plastic = 0.0, damping = 0.0, contact = 0.0, external = 0.0, ground = 0.0;
+    double error = 0.0; // |kinetic + strain + plastic + damping + contact − external − ground − initial| over the largest term
+};
+
 struct StepResult {
     int step = 0;                   // 0 is the unloaded state
     double load_factor = 0.0;       // λ, the factor of the pattern the step's stage drives
@@ -60,6 +69,12 @@ struct StepResult {
     double contact_length = 0.0;    // length of the deformed structure along active nodes
     int hinge_count = 0;            // element ends yielding or plastic
     int plastic_hinge_count = 0;    // element ends at capacity
+    // Transient steps: model time, the free DOFs' velocity and acceleration (3 per node, relative
+    // to a moving ground), and the energies; a static step's time is where time stands (0 before
+    // the first transient stage).
+    double time = 0.0;
+    std::vector<double> velocity, acceleration;
+    EnergyTerms energy;
 };
 
 // output_failed: an observer could not take a step (a full disk); the steps before it stand.
@@ -69,6 +84,10 @@ struct RunSummary {
     RunStatus status = RunStatus::completed;
     std::string reason;
     int steps = 0;
+    // Transient stages: the model time reached, the largest energy error and its step.
+    double time = 0.0;
+    double largest_energy_error = 0.0;
+    int largest_energy_error_step = 0;
     int iterations = 0;
     int cut_steps = 0;
     // Converged steps of adaptive increments taken again smaller because they carried a hinge

@@ -86,6 +86,7 @@ bool StructuralSystem::evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd&
     for (const auto& c : components_) {
         if (!c->evaluate(at, internal_, coupling_)) return false;
         blocks_changed = blocks_changed || c->blocks_changed();
+        if (keep_member_forces_ && c.get() == members_) member_internal_ = internal_;
     }
     if (blocks_changed) build_assembler();
     if (!pressure_.empty()) {

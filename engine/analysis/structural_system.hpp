@@ -52,6 +52,10 @@ public:
                   bool freeze_hinges = false, bool freeze_fibres = false);
 
     const Eigen::VectorXd& internal_force() const { return internal_; } // full DOF vector
+    // The members' part of internal_force() (the rest is the springs' and contacts'), kept from
+    // each evaluation once asked for (a transient run's energy accounts).
+    void keep_member_forces() { keep_member_forces_ = true; }
+    const Eigen::VectorXd& member_internal_force() const { return member_internal_; }
     const Eigen::VectorXd& coupling() const { return coupling_; }       // K_fp·ū + platens, free DOFs
     // Reference loads at the evaluated state, per unit λ: the fixed ones plus follower pressure.
     const Eigen::VectorXd& load() const { return load_; }
@@ -151,6 +155,8 @@ private:
     mutable bool tangent_assembled_ = false;
     mutable bool tangent_finite_ = true;
     Eigen::VectorXd internal_;
+    Eigen::VectorXd member_internal_;
+    bool keep_member_forces_ = false;
     Eigen::VectorXd coupling_;
     bool driven_by_platens_ = false;
 };

@@ -25,6 +25,13 @@ int Model::integration_points() const {
     return most;
 }
 
+bool Model::transient() const {
+    if (analysis.scheme == Scheme::transient) return true;
+    for (const StageSpec& s : stages)
+        if (s.scheme == Scheme::transient) return true;
+    return false;
+}
+
 bool Model::has_moving_base() const {
     for (const BaseLine& b : bases)
         if (b.moves()) return true;

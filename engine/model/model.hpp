@@ -2,6 +2,8 @@
 // Plain data only; the analysis builds elements, sections and springs from it.
 #pragma once
 
+#include "model/dynamics_spec.hpp"
+
 #include <array>
 #include <cmath>
 #include <map>
@@ -76,7 +78,8 @@ struct SectionSpec {
     int segments = 1;               // distributed: segments per element (inner nodes condensed)
     double segment_grading = 1.0;   // distributed: each segment's length over its outer neighbour's
     bool axial_strain_per_segment = false; // distributed segments: each its own axial strain, one N along the member
-    double mass_per_length = 0.0;   // density × area, for self weight
+    double mass_per_length = 0.0;   // density × area: self weight and inertia
+    double rotary_inertia_per_length = 0.0; // density × inertia
     // The distance between the section's two surfaces (h, depth, diameter, thickness) where
     // self-contact needs it; 0: that of the rectangle of the same A and I, √(12 I/A).
     double depth = 0.0;
@@ -157,7 +160,8 @@ struct FoundationSpring {
     int base = 0;                                // unilateral, not anchored: its base line in Model::bases
 };
 
-enum class Scheme { load_control, displacement_control, arc_length };
+// transient: time integration (engine/dynamics/), the others path following.
+enum class Scheme { load_control, displacement_control, arc_length, transient };
 
 struct DofRef {
     int node = 0;
@@ -194,6 +198,7 @@ struct AnalysisSpec {
     // Self-contact is not modelled: a structure that passes through itself stops the run,
     // unless the scene allows it (a cantilever rolled into two turns, say).
     bool allow_crossing = false;
+    TransientSpec transient; // scheme transient
 };
 
 // A further stage of the analysis after [analysis]'s: the path goes on from where the previous
@@ -207,6 +212,7 @@ struct StageSpec {
     std::optional<double> target_displacement; // on the control DOF, signed as reported
     int pattern = 0;                           // the load pattern it drives
     DofRef control;                            // its controlled DOF (the previous stage's unless named)
+    TransientSpec transient;                   // scheme transient
 };
 
 struct ReportSpec {
@@ -241,8 +247,11 @@ struct Model {
     std::vector<std::string> patterns{"main"}; // load pattern names, "main" first
     AnalysisSpec analysis;
     std::vector<StageSpec> stages; // after the first ([analysis]), in order
+    DynamicsSpec dynamics;
     ReportSpec report;
 
+    // Whether some stage integrates in time.
+    bool transient() const;
     int dof_count() const { return dofs_per_node * static_cast<int>(nodes.size()); }
     bool inelastic() const;
     bool has_plasticity(Plasticity kind) const; // some element's section models it this way

@@ -14,6 +14,7 @@ void fill_step_fields(const StepView& v, XmlDataset& out) {
     const StepResult& r = v.result;
     std::vector<XmlArray>& fd = out.field_data;
     fd.push_back(field_value(name::time_value, v.time));
+    if (v.has(name::model_time)) fd.push_back(field_value(name::model_time, r.time));
     fd.push_back(field_value(name::load_factor, r.load_factor));
     fd.push_back(field_value(name::load, r.load));
     fd.push_back(field_value(name::control_displacement, r.control_displacement));
@@ -57,7 +58,8 @@ OutputGroup step_field_arrays() {
     const Where F = Where::field;
     const Type R = Type::float64, S = Type::text;
     return {{
-                {name::time_value, F, R, 1, Quantity::none, When::always, "the PVD time: step index, or arc length"},
+                {name::time_value, F, R, 1, Quantity::none, When::always, "the PVD time: step index, arc length, or model time (static steps of a scene in time a millionth of a time step apart)"},
+                {name::model_time, F, R, 1, Quantity::none, When::transient, "the step's time in the model (0 before the first transient stage)"},
                 {name::load_factor, F, R, 1, Quantity::none, When::always, "λ"},
                 {name::load, F, R, 1, Quantity::reported_load, When::always, "the reported load (total in its direction, or λ)"},
                 {name::control_displacement, F, R, 1, Quantity::reported_displacement, When::always, "the controlled displacement"},
