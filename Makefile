@@ -95,6 +95,7 @@ fuzz:
 update-snapshots: build
 	rm -rf tests/snapshots
 	scripts/render-snapshots.sh $(BUILD)/cli/plastica tests/snapshots
+	find tests/snapshots -name '.plastica-*' -delete
 
 clean:
 	rm -rf $(BUILD) build-sanitize build-bench build-fuzz

@@ -21,5 +21,6 @@ int sweep_command(const Args& args);
 int merge_command(const Args& args);
 int report_command(const Args& args);
 int schema_command(const Args& args);
+int modes_command(const Args& args);
 
 } // namespace plastica::cli

@@ -69,6 +69,22 @@ std::string to_json(const RunReport& r) {
         }
         j["residual_tolerance"] = t;
     }
+    if (r.model && r.model->transient()) {
+        // Motion in time: how far it went, how well its energy balanced, what damped it.
+        const DampingSpec& d = r.model->dynamics.damping;
+        Json dynamics = {{"time", r.summary.time},
+                         {"mass", r.model->dynamics.mass == MassKind::consistent ? "consistent" : "lumped"},
+                         {"largest_energy_error", r.summary.largest_energy_error},
+                         {"largest_energy_error_step", r.summary.largest_energy_error_step},
+                         {"time_step_cuts", r.summary.cut_steps}};
+        if (d.present())
+            dynamics["damping"] = {{"alpha_m", r.summary.rayleigh_alpha_m},
+                                   {"beta_k", r.summary.rayleigh_beta_k},
+                                   {"stiffness", d.stiffness == DampingSpec::Stiffness::initial   ? "initial"
+                                                 : d.stiffness == DampingSpec::Stiffness::tangent ? "tangent"
+                                                                                                  : "committed"}};
+        j["dynamics"] = dynamics;
+    }
     if (r.summary.negative_pivot_steps > 0) {
         j["negative_pivot_steps"] = r.summary.negative_pivot_steps;
         j["first_negative_pivot_step"] = r.summary.first_negative_pivot_step;

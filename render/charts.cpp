@@ -96,10 +96,11 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
                                                const std::vector<ReferencePoints>& references) {
     const SeriesSummary& main = *runs.front();
     ChartFigure f;
-    f.title = main.load_label + " against " + main.displacement_label + ": " + scene_heading(main);
-    f.x_label = with_unit(main.displacement_label, main.displacement_unit);
-    f.y_label = load_axis_title(main);
-    std::copy(main.load_axis_cut, main.load_axis_cut + 2, f.load_axis_cut);
+    f.title = (main.in_time ? main.displacement_label + " against time: " : main.load_label + " against " + main.displacement_label + ": ") +
+              scene_heading(main);
+    f.x_label = chart_x_title(main);
+    f.y_label = chart_y_title(main);
+    if (!main.in_time) std::copy(main.load_axis_cut, main.load_axis_cut + 2, f.load_axis_cut);
     f.width = width;
     f.height = height;
     // The main run in the progress blue, drawn last so it stays on top; the others in colours
@@ -107,8 +108,8 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     const Rgb others[] = {{105, 105, 105}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
     for (std::size_t k = runs.size(); k-- > 0;) {
         const Rgb c = k == 0 ? colour::curve_progress : others[(k - 1) % 4];
-        f.series.push_back({runs.size() > 1 ? runs[k]->scene : "", curve_column(runs[k]->curve, runs[k]->curve.size(), false),
-                            curve_column(runs[k]->curve, runs[k]->curve.size(), true), c, k == 0 ? 3.0f : 2.0f});
+        f.series.push_back({runs.size() > 1 ? runs[k]->scene : "", chart_x(*runs[k], runs[k]->curve.size()),
+                            chart_y(*runs[k], runs[k]->curve.size()), c, k == 0 ? 3.0f : 2.0f});
     }
     // Reference points as open markers in colours no run or event uses.
     const Rgb marks[] = {{0, 0, 0}, {120, 60, 160}, {190, 120, 0}, {0, 110, 110}};
@@ -120,7 +121,7 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
         for (const CurvePoint& c : main.curve)
             if (happened(c)) {
                 if (cut && (c.load < main.load_axis_cut[0] || c.load > main.load_axis_cut[1])) return false; // off the chart
-                f.series.push_back({label, {c.displacement}, {c.load}, colour, 12.0f, true});
+                f.series.push_back({label, {main.in_time ? c.time : c.displacement}, {main.in_time ? c.displacement : c.load}, colour, 12.0f, true});
                 return true;
             }
         return false;
@@ -136,6 +137,19 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
             marked |= mark("contact spreads", colour::contact_force, [&](const CurvePoint& c) { return c.contact_count > at_start; });
     }
     f.legend = runs.size() > 1 || marked || !references.empty();
+    return draw_chart(f);
+}
+
+vtkSmartPointer<vtkImageData> draw_hysteresis_chart(const SeriesSummary& run, int width, int height) {
+    ChartFigure f;
+    f.title = "base shear against " + run.displacement_label + ": " + (run.title.empty() ? run.scene : run.title);
+    f.x_label = with_unit(run.displacement_label, run.displacement_unit);
+    f.y_label = with_unit("base shear (on the supports, along x)", run.force_unit);
+    f.width = width;
+    f.height = height;
+    std::vector<double> drift, shear;
+    for (const CurvePoint& c : run.curve) drift.push_back(c.displacement), shear.push_back(c.base_shear);
+    f.series.push_back({"", drift, shear, colour::curve_progress, 2.0f});
     return draw_chart(f);
 }
 

@@ -32,5 +32,8 @@ vtkSmartPointer<vtkImageData> draw_chart(const ChartFigure& figure);
 // Reference points (published or measured) are drawn as markers, each set in the legend.
 vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSummary*>& runs, int width, int height,
                                                const std::vector<ReferencePoints>& references = {});
+// A series in time: the supports' horizontal reaction (base shear) against the reported
+// displacement, its hysteresis.
+vtkSmartPointer<vtkImageData> draw_hysteresis_chart(const SeriesSummary& run, int width, int height);
 
 } // namespace plastica::render

@@ -29,6 +29,23 @@ std::vector<double> curve_column(const std::vector<CurvePoint>& curve, std::size
     return v;
 }
 
+std::vector<double> chart_x(const SeriesSummary& s, std::size_t count) {
+    if (!s.in_time) return curve_column(s.curve, count, false);
+    std::vector<double> v;
+    for (std::size_t i = 0; i < count && i < s.curve.size(); ++i) v.push_back(s.curve[i].time);
+    return v;
+}
+
+std::vector<double> chart_y(const SeriesSummary& s, std::size_t count) { return curve_column(s.curve, count, !s.in_time); }
+
+std::string chart_x_title(const SeriesSummary& s) {
+    return s.in_time ? std::string("time (s)") : with_unit(s.displacement_label, s.displacement_unit);
+}
+
+std::string chart_y_title(const SeriesSummary& s) {
+    return s.in_time ? with_unit(s.displacement_label, s.displacement_unit) : load_axis_title(s);
+}
+
 namespace {
 
 std::string with_digits(double value, int digits) {

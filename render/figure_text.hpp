@@ -26,6 +26,12 @@ std::string scene_heading(const SeriesSummary& s);
 std::string load_axis_title(const SeriesSummary& s);
 // The first `count` displacements (load = false) or loads of a curve.
 std::vector<double> curve_column(const std::vector<CurvePoint>& curve, std::size_t count, bool load);
+// What the run's chart plots: the load against the displacement, or for a series in time the
+// displacement against time. The first `count` points, and the axes' titles.
+std::vector<double> chart_x(const SeriesSummary& s, std::size_t count);
+std::vector<double> chart_y(const SeriesSummary& s, std::size_t count);
+std::string chart_x_title(const SeriesSummary& s);
+std::string chart_y_title(const SeriesSummary& s);
 // "%.4g" without trailing noise.
 std::string number(double value);
 // Labels for values that must stay apart: the fewest significant digits (at least 3) with which

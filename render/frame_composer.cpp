@@ -25,7 +25,7 @@ std::string unit_after(const std::string& unit) { return unit.empty() ? "" : " "
 FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* first_step, vtkPolyData* base, int width, int height,
                              const LayerChoice& layers, double text_boost)
     : summary_(summary), window_(width, height),
-      chart_(with_unit(summary.displacement_label, summary.displacement_unit), load_axis_title(summary),
+      chart_(chart_x_title(summary), chart_y_title(summary),
              text_boost * text_scale(width, height)) {
     const double s = text_boost * text_scale(width, height);
     auto structure_layers = make_layers(summary, first_step, base, layers);
@@ -46,15 +46,15 @@ FrameComposer::FrameComposer(const SeriesSummary& summary, vtkUnstructuredGrid* 
 
     chart_area_->SetViewport(layout.chart[0], layout.chart[1], layout.chart[2], layout.chart[3]);
     chart_area_->SetBackground(1, 1, 1);
-    const auto xs = curve_column(summary.curve, summary.curve.size(), false);
-    const auto ys = curve_column(summary.curve, summary.curve.size(), true);
+    const auto xs = chart_x(summary, summary.curve.size());
+    const auto ys = chart_y(summary, summary.curve.size());
     chart_.add({"", xs, ys, colour::curve_full, 2.0f});
     progress_line_ = chart_.add({"", {}, {}, colour::curve_progress, 3.0f});
     current_point_ = chart_.add({"", {}, {}, colour::current_point, 11.0f, true});
     double x0, x1, y0, y1;
     padded_range(xs, x0, x1);
     padded_range(ys, y0, y1);
-    if (summary.load_axis_cut[1] > summary.load_axis_cut[0]) y0 = summary.load_axis_cut[0], y1 = summary.load_axis_cut[1];
+    if (!summary.in_time && summary.load_axis_cut[1] > summary.load_axis_cut[0]) y0 = summary.load_axis_cut[0], y1 = summary.load_axis_cut[1];
     chart_.set_ranges(x0, x1, y0, y1);
     chart_.place_in(chart_area_);
 
@@ -68,16 +68,19 @@ FrameComposer::~FrameComposer() = default;
 
 vtkSmartPointer<vtkImageData> FrameComposer::draw(vtkUnstructuredGrid* step, std::size_t index) {
     const CurvePoint& c = summary_.curve.at(index);
+    // In time, the time leads and the load (gravity held) is left out.
     const std::string status = "step " + std::to_string(c.step) + " of " + std::to_string(summary_.curve.back().step) +
-                               "      " + summary_.load_label + " = " + number(c.load) + unit_after(summary_.load_unit) +
+                               (summary_.in_time ? "      t = " + number(c.time) + " s"
+                                                 : "      " + summary_.load_label + " = " + number(c.load) + unit_after(summary_.load_unit)) +
                                "      " + summary_.displacement_label + " = " + number(c.displacement) +
                                unit_after(summary_.displacement_unit);
     status_->SetInput(status.c_str());
     structure_->show(step);
     // A line needs two points; the first step is the marker alone.
     const std::size_t shown = index == 0 ? 0 : index + 1;
-    chart_.replace(progress_line_, curve_column(summary_.curve, shown, false), curve_column(summary_.curve, shown, true));
-    chart_.replace(current_point_, {c.displacement}, {c.load});
+    chart_.replace(progress_line_, chart_x(summary_, shown), chart_y(summary_, shown));
+    if (summary_.in_time) chart_.replace(current_point_, {c.time}, {c.displacement});
+    else chart_.replace(current_point_, {c.displacement}, {c.load});
     return window_.capture();
 }
 

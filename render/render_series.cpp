@@ -151,6 +151,10 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
         std::vector<const SeriesSummary*> runs{&summary};
         for (const SeriesSummary& o : overlays) runs.push_back(&o);
         write_png(draw_curve_chart(runs, options.width, options.height, references), (out / "chart.png").string());
+        // Shaken on supports: the base shear's loops against the drift.
+        const bool on_supports = std::any_of(summary.curve.begin(), summary.curve.end(), [](const CurvePoint& c) { return c.base_shear != 0.0; });
+        if (summary.in_time && on_supports)
+            write_png(draw_hysteresis_chart(summary, options.width, options.height), (out / "hysteresis.png").string());
         if (!options.shapes.empty()) {
             // This run's shapes, and each overlay's beside them at one scale.
             std::vector<ShapesPanel> panels{{&summary, &series}};

@@ -226,6 +226,12 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         c.load = field_value(grid, result::name::load);
         if (grid->GetFieldData()->GetArray(result::name::contact_count)) c.contact_count = static_cast<int>(field_value(grid, result::name::contact_count));
         if (grid->GetFieldData()->GetArray(result::name::hinge_count)) c.hinge_count = static_cast<int>(field_value(grid, result::name::hinge_count));
+        if (grid->GetFieldData()->GetArray(result::name::model_time)) {
+            s.in_time = true;
+            c.time = field_value(grid, result::name::model_time);
+        }
+        if (vtkDataArray* reaction = grid->GetPointData()->GetArray(result::name::reaction))
+            for (vtkIdType i = 0; i < reaction->GetNumberOfTuples(); ++i) c.base_shear -= reaction->GetComponent(i, 0);
         step_contact_force.push_back(0.0);
         if (vtkDataArray* force = grid->GetPointData()->GetArray(result::name::contact_force)) {
             vtkDataArray* state = grid->GetPointData()->GetArray(result::name::contact);

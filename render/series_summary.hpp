@@ -19,6 +19,8 @@ namespace plastica::render {
 
 struct CurvePoint {
     int step = 0;
+    double time = 0.0;       // model time (a series in time)
+    double base_shear = 0.0; // the horizontal force on the supports (−Σ of their reactions along x)
     double displacement = 0.0;
     double load = 0.0;
     int contact_count = 0;
@@ -46,6 +48,8 @@ struct SeriesSummary {
     double max_contact_force = 0.0;
     double max_surface_contact_force = 0.0; // largest push between surfaces ([[self_contact]]) at a node
     bool inelastic = false;          // the scene has plastic hinges (hinge arrays)
+    // A series in time (its VTUs carry model_time): charts plot against time, frames say t.
+    bool in_time = false;
     bool mirrored = false;           // a half model drawn with its mirror image about x = mirror_x
     double mirror_x = 0.0;
     bool any_yielding = false, any_plastic = false, any_failed = false;

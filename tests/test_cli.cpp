@@ -898,3 +898,59 @@ TEST_CASE("Likely unit mistakes are warned of on stderr and in run.json, and the
     CHECK_THAT(ring.output, !Catch::Contains("warning"));
     CHECK_FALSE(read_json(dir / "ring" / "run.json").contains("warnings"));
 }
+
+TEST_CASE("plastica modes writes periods, effective masses and the shapes, at rest or at a step", "[cli][dynamics]") {
+    const fs::path at_rest = scratch("modes_rest"), loaded = scratch("modes_loaded");
+    const Result r = command("modes " + model("gallery/frame_shaken.toml") + " -n 3 -q -o " + at_rest.string());
+    REQUIRE(r.code == 0);
+    CHECK(fs::exists(at_rest / "contact_sheet.png"));
+    CHECK(fs::exists(at_rest / "frame_shaken.pvd"));
+    auto rows = [](const fs::path& folder) {
+        std::ifstream in(folder / "modes.csv");
+        std::string header, line;
+        std::getline(in, header);
+        CHECK(header == "mode,period,frequency,omega,effective_mass_x,effective_mass_y,share_x,share_y");
+        std::vector<std::vector<double>> out;
+        while (std::getline(in, line)) {
+            std::vector<double> row;
+            std::stringstream cells(line);
+            for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+            out.push_back(row);
+        }
+        return out;
+    };
+    const auto rest = rows(at_rest);
+    REQUIRE(rest.size() == 3u);
+    // The first mode sways: it carries nearly all of the 100 t at the beam and the columns' share.
+    CHECK(rest[0][6] > 0.99);
+    CHECK(rest[0][1] * rest[0][2] == Approx(1.0));
+    // Under its gravity (step 4) the frame sways more slowly: P-Δ takes stiffness away.
+    REQUIRE(command("modes " + model("gallery/frame_shaken.toml") + " -n 1 -q --no-render --step 4 -o " + loaded.string()).code == 0);
+    const auto held = rows(loaded);
+    CHECK(held[0][1] > rest[0][1] * 1.005);
+    CHECK(command("modes " + model("gallery/frame_shaken.toml") + " --step 100000 --no-render -o " + loaded.string()).code == 2);
+}
+
+TEST_CASE("A run in time writes its time and energies, a PVD in model time, and the drift and hysteresis charts", "[cli][dynamics]") {
+    const fs::path out = scratch("frame_shaken");
+    const Result r = command("run " + model("gallery/frame_shaken.toml") + " -q -o " + out.string());
+    REQUIRE(r.code == 0);
+    std::ifstream curve(out / "curve.csv");
+    std::string header;
+    std::getline(curve, header);
+    CHECK_THAT(header, Catch::Contains(",time,kinetic_energy,strain_energy,plastic_dissipation,damping_work,contact_work,external_work,"
+                                       "ground_motion_work,energy_error"));
+    std::ifstream pvd(out / "frame_shaken.pvd");
+    std::stringstream text;
+    text << pvd.rdbuf();
+    CHECK_THAT(text.str(), Catch::Contains("timestep=\"10\""));
+    const nlohmann::json run = read_json(out / "run.json");
+    CHECK(run["dynamics"]["time"] == 10.0);
+    CHECK(run["dynamics"]["largest_energy_error"].get<double>() < 1e-6);
+    CHECK(run["dynamics"]["damping"]["alpha_m"].get<double>() > 0.0);
+    for (const char* picture : {"chart.png", "hysteresis.png", "contact_sheet.png"}) {
+        CAPTURE(picture);
+        REQUIRE(fs::exists(out / picture));
+        CHECK(ink(out / picture) > 0.02);
+    }
+}

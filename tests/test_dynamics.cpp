@@ -3,6 +3,8 @@
 // motion against an independent integration, energy and momentum of large free motions.
 #include "analysis/path_following.hpp"
 #include "dynamics/mass_matrix.hpp"
+#include "dynamics_reader.hpp"
+#include "scene_error.hpp"
 #include "scene_reader.hpp"
 
 #include <catch2/catch.hpp>
@@ -231,4 +233,60 @@ TEST_CASE("An elastic–perfectly plastic SDOF under a ground motion matches an 
     const EnergyTerms& e = run.steps.back().energy;
     CHECK(e.plastic > 0.1 * std::abs(e.ground));
     CHECK(run.summary.largest_energy_error <= 1e-4);
+}
+
+TEST_CASE("A PEER AT2 record is read whole, its header checked") {
+    const Model model = read_scene(std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/frame_shaken.toml");
+    REQUIRE(model.dynamics.ground_motions.size() == 1);
+    const GroundMotionSpec& g = model.dynamics.ground_motions.front();
+    CHECK(g.time_step == 0.02);
+    CHECK(g.acceleration.size() == 2000u);
+    // The first sample, .1297983E-02 g, in m/s² (the scene's [units] are m and kN).
+    CHECK(g.acceleration.front() == Approx(0.1297983e-2 * 9.80665).epsilon(1e-12));
+    CHECK(model.dynamics.damping.ratio.value_or(0.0) == 0.02);
+
+    CHECK_THROWS_WITH(parse_acceleration_record("title\nsecond\nthird\nNPTS=  3, DT= .01 SEC\n1 2\n"),
+                      Catch::Contains("announces NPTS = 3 values, the file holds 2"));
+    CHECK_THROWS_WITH(parse_acceleration_record("title\nsecond\nthird\nno header here\n1 2\n"), Catch::Contains("line 4"));
+    CHECK_THROWS_WITH(parse_acceleration_record("0.1 0.2\n0.3 x\n"), Catch::Contains("line 2"));
+    CHECK(parse_acceleration_record("0.1, 0.2\n0.3\n").values.size() == 3u);
+}
+
+TEST_CASE("Dynamics tables' mistakes are located at their file, line and key") {
+    struct Case {
+        const char* what;
+        std::string extra, analysis, message;
+    };
+    const std::string transient = "scheme = \"transient\"\ntime_step = 0.01\nduration = 1.0\n";
+    const std::string record = std::string(PLASTICA_SOURCE_DIR) + "/models/records/ARL360.at2";
+    const std::vector<Case> cases = {
+        {"missing record", "[[ground_motion]]\nfile = \"no_such.at2\"\nunits = 1.0\n", transient, "'ground_motion[1].file': cannot read the record"},
+        {"a step that does not divide the record's", "[[ground_motion]]\nfile = \"" + record + "\"\nunits = 1.0\n",
+         "scheme = \"transient\"\ntime_step = 0.03\nduration = 1.0\n", "'analysis.time_step': the step 0.030000 does not divide the record's 0.020000"},
+        {"g without units", "[[ground_motion]]\nfile = \"" + record + "\"\n", transient, "'ground_motion[1].units': a record in g needs the scene's [units]"},
+        {"alpha on Newmark", "[[initial_velocity]]\nat = [1.0, 0.0]\nv = [0.01, 0.0]\n", transient + "alpha = -0.1\n", "'analysis.alpha': 'alpha' is HHT's"},
+        {"alpha out of range", "[[initial_velocity]]\nat = [1.0, 0.0]\nv = [0.01, 0.0]\n", transient + "integrator = \"hht\"\nalpha = -0.5\n",
+         "'analysis.alpha'"},
+        {"increment in time", "[[initial_velocity]]\nat = [1.0, 0.0]\nv = [0.01, 0.0]\n", transient + "increment = 0.1\n",
+         "'analysis.increment': a transient stage steps in time"},
+        {"series of an unknown pattern", "[[load]]\nat = [1.0, 0.0]\nfx = 1.0\n[[time_series]]\npattern = \"wind\"\nkind = \"pulse\"\nwidth = 0.1\n",
+         transient, "'time_series[1].pattern': no load belongs to pattern 'wind'"},
+        {"table times not increasing", "[[load]]\nat = [1.0, 0.0]\nfx = 1.0\n[[time_series]]\npattern = \"main\"\nkind = \"table\"\ntimes = [0.0, 0.2, 0.1]\nvalues = [0.0, 1.0, 0.0]\n",
+         transient, "'time_series[1].times': expected increasing times (item 3)"},
+        {"ratio and coefficients", "[[initial_velocity]]\nat = [1.0, 0.0]\nv = [0.01, 0.0]\n[damping]\nratio = 0.05\nalpha_m = 0.1\n", transient,
+         "'damping.ratio': give either 'ratio'"},
+        {"mass at no node", "[[initial_velocity]]\nat = [1.0, 0.0]\nv = [0.01, 0.0]\n[[mass]]\nat = [3.0, 0.0]\nm = 1.0\n", transient,
+         "'mass[2].at': no node at [3, 0]"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.what);
+        std::string text = sdof(c.extra, 0.01, 1.0);
+        text = text.substr(0, text.find("[analysis]")) + "[analysis]\n" + c.analysis + "control_at = [1.0, 0.0]\ncontrol_dof = \"ux\"\n";
+        try {
+            (void)read_scene_text(text, "bad.toml");
+            FAIL("no error");
+        } catch (const SceneError& e) {
+            CHECK_THAT(e.what(), Catch::Contains("bad.toml:") && Catch::Contains(c.message));
+        }
+    }
 }

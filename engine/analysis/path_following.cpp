@@ -259,7 +259,11 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     };
     auto finish = [&](int steps) {
         summary.steps = steps;
-        if (stepper_) summary.time = stepper_->time();
+        if (stepper_) {
+            summary.time = stepper_->time();
+            summary.rayleigh_alpha_m = stepper_->alpha_m();
+            summary.rayleigh_beta_k = stepper_->beta_k();
+        }
         summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return summary;
     };

@@ -88,6 +88,7 @@ struct RunSummary {
     double time = 0.0;
     double largest_energy_error = 0.0;
     int largest_energy_error_step = 0;
+    double rayleigh_alpha_m = 0.0, rayleigh_beta_k = 0.0; // the damping's coefficients as used
     int iterations = 0;
     int cut_steps = 0;
     // Converged steps of adaptive increments taken again smaller because they carried a hinge

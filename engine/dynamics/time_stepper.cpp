@@ -60,6 +60,7 @@ void TimeStepper::set_damping(const TransientSpec&, const Eigen::VectorXd& u) {
 
 void TimeStepper::begin_stage(const TransientSpec& spec, const Eigen::VectorXd& u, double load_factor, LinearSolver& solver) {
     spec_ = spec;
+    stage_start_ = time_;
     const Eigen::VectorXd no_prescribed = Eigen::VectorXd::Zero(u.size());
     system_.evaluate(u, no_prescribed, load_factor, false);
     DynamicState& s = state_;
@@ -125,7 +126,11 @@ void TimeStepper::commit(double dt) {
     damped_ += work(s0.damping, s1.damping);
     reference_scale_ = std::max(reference_scale_, trial_->own_scale());
     state_ = s1;
+    // On the stage's grid of time steps, time is counted in steps (a sum of ten thousand
+    // increments of 0.01 would drift off 100 by round-off).
     time_ += dt;
+    const double steps = std::round((time_ - stage_start_) / spec_.time_step);
+    if (std::abs(time_ - stage_start_ - steps * spec_.time_step) <= 1e-9 * spec_.time_step) time_ = stage_start_ + steps * spec_.time_step;
     if (model_.dynamics.damping.stiffness == DampingSpec::Stiffness::committed) committed_tangent_ = system_.tangent();
 }
 
@@ -150,7 +155,7 @@ double TimeStepper::strain_energy() const {
     return energy;
 }
 
-void TimeStepper::fill(const Eigen::VectorXd& u, StepResult& out) const {
+void TimeStepper::fill(const Eigen::VectorXd& u, StepResult& out) {
     out.time = time_;
     Eigen::VectorXd full = Eigen::VectorXd::Zero(u.size());
     system_.scatter(state_.v, full);

@@ -38,7 +38,7 @@ public:
     // The converged step becomes the committed state (after the system's commit).
     void commit(double dt);
     // Time, velocity, acceleration and energies of the committed state.
-    void fill(const Eigen::VectorXd& u, StepResult& out) const;
+    void fill(const Eigen::VectorXd& u, StepResult& out);
 
     double time() const { return time_; }
     double alpha_m() const { return damping_.alpha_m; }
@@ -60,13 +60,14 @@ private:
     bool damping_set_ = false;
     bool started_ = false;
     double time_ = 0.0;
+    double stage_start_ = 0.0;
     DynamicState state_;                       // committed
     std::unique_ptr<TransientProblem> trial_;  // the last step's problem, for commit()
     // The energy accounts since the first transient stage began.
     double kinetic_start_ = 0.0, strain_start_ = 0.0;
     double external_ = 0.0, ground_ = 0.0, members_ = 0.0, contact_ = 0.0, damped_ = 0.0;
     double reference_scale_ = 0.0; // the largest force scale of the committed steps
-    mutable double energy_scale_ = 0.0; // the largest energy term reported so far
+    double energy_scale_ = 0.0; // the largest energy term reported so far
 };
 
 } // namespace plastica
