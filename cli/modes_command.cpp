@@ -7,7 +7,7 @@
 #include "options.hpp"
 #include "render_stage.hpp"
 
-#include "analysis/path_following.hpp"
+#include "analysis/modes_at_step.hpp"
 #include "atomic_file.hpp"
 #include "dynamics/modal_analysis.hpp"
 #include "output_folder.hpp"
@@ -15,7 +15,6 @@
 #include "vtu_series_writer.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -90,31 +89,21 @@ int modes_command(const Args& args) {
         std::cerr << "plastica: --step takes a step number ≥ 0\n";
         return bad_input;
     }
-    // The run up to the step asked for, stopped there; its state is the one analysed.
-    PathFollowing analysis(model);
-    std::atomic<bool> reached{at_step == 0};
     std::optional<StepResult> state;
-    RunControl control;
-    control.interrupt = &reached;
-    const auto keep = [&](const StepResult& r) {
-        state = r;
-        if (r.step >= at_step) reached = true;
-    };
-    const RunSummary summary = analysis.run({keep}, control);
-    if (!state || state->step < at_step) {
-        std::cerr << "plastica: " << scene_file << ": the run ends at step " << (state ? state->step : 0) << " (" << summary.reason
-                  << "), before step " << at_step << "\n";
+    ModalResult modes;
+    try {
+        ModesAtStep found = modes_at_step(model, count, at_step);
+        modes = std::move(found.modes);
+        state = std::move(found.state);
+    } catch (const ModalError& e) {
+        std::cerr << "plastica: " << scene_file << ": " << e.what() << "\n";
+        return stopped_early;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "plastica: " << scene_file << ": " << e.what() << "\n";
         return bad_input;
     }
     if (std::any_of(state->applied_load.begin(), state->applied_load.end(), [](double f) { return f != 0.0; }))
         render_options.hide.push_back("loads");
-    ModalResult modes;
-    try {
-        modes = analysis.modes(count);
-    } catch (const ModalError& e) {
-        std::cerr << "plastica: " << scene_file << ": " << e.what() << "\n";
-        return stopped_early;
-    }
     namespace fs = std::filesystem;
     const std::string folder = vm.count("output") ? vm["output"].as<std::string>()
                                                   : (fs::path(default_output_folder(model.name)) / "modes").string();

@@ -2,6 +2,7 @@
 // of a dict), runs it with the GIL released, and keeps every converged step, so that Python gets
 // the curve and run.json as the command line writes them, each step's arrays by the result
 // schema's names (io/step_dataset.hpp), and the same files on request. python/plastica/ wraps it.
+#include "analysis/modes_at_step.hpp"
 #include "analysis/path_following.hpp"
 #include "atomic_file.hpp"
 #include "curve_writer.hpp"
@@ -95,6 +96,36 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
     return run;
 }
 
+// The natural modes of a scene at step `step` of its run (plastica modes): one dict per mode.
+py::list modes_of_scene(const std::string& source, bool is_text, const std::string& name,
+                        const std::vector<std::pair<std::string, std::string>>& overrides, int count, int step) {
+    std::vector<Override> parsed;
+    for (const auto& [path, value] : overrides) parsed.push_back({path, value});
+    ModesAtStep found;
+    {
+        py::gil_scoped_release unlocked;
+        const Model model = is_text ? read_scene_text(source, name.empty() ? "scene" : name, parsed) : read_scene(source, parsed);
+        found = modes_at_step(model, count, step);
+    }
+    py::list out;
+    for (const ModeRow& m : found.modes.modes) {
+        py::dict row;
+        row["mode"] = m.mode;
+        row["period"] = m.period;
+        row["frequency"] = m.frequency;
+        row["omega"] = m.omega;
+        row["effective_mass_x"] = m.effective_mass_x;
+        row["effective_mass_y"] = m.effective_mass_y;
+        row["share_x"] = found.modes.mass_x > 0.0 ? m.effective_mass_x / found.modes.mass_x : 0.0;
+        row["share_y"] = found.modes.mass_y > 0.0 ? m.effective_mass_y / found.modes.mass_y : 0.0;
+        py::array_t<double> shape({static_cast<py::ssize_t>(m.shape.size() / 3), static_cast<py::ssize_t>(3)});
+        std::copy(m.shape.begin(), m.shape.end(), shape.mutable_data());
+        row["shape"] = shape;
+        out.append(row);
+    }
+    return out;
+}
+
 // Writes what `plastica run --no-render` writes: the VTU/PVD series, curve.csv and run.json.
 void write_run(const Run& run, const std::string& folder) {
     namespace fs = std::filesystem;
@@ -180,5 +211,7 @@ PYBIND11_MODULE(_plastica, m) {
         .def("step_arrays", &step_arrays, py::arg("k"))
         .def("write", &write_run, py::arg("folder"));
     m.def("run_scene", &run_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"));
+    m.def("modes_of_scene", &modes_of_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),
+          py::arg("count"), py::arg("step"));
     m.attr("version") = PLASTICA_VERSION;
 }

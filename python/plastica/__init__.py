@@ -216,6 +216,21 @@ def run(scene, overrides=None):
         raise
 
 
+def modes(scene, count=6, step=0, overrides=None):
+    """The natural modes of a scene (a path, TOML text or a dict), as `plastica modes`: at the
+    unloaded structure, or at step `step` of its run. A list of dicts, one per mode: mode, period,
+    frequency, omega, effective_mass_x/y, share_x/y, and shape (an n_nodes × 3 array: ux, uy, θ
+    for unit modal mass)."""
+    source, is_text, name = _scene_source(scene)
+    pairs = [(str(k), _toml_value(v, str(k))) for k, v in (overrides or {}).items()]
+    try:
+        return _plastica.modes_of_scene(source, is_text, name, pairs, int(count), int(step))
+    except SceneError as error:
+        if isinstance(scene, dict):
+            raise SceneError(_named_path(str(error), scene)) from None
+        raise
+
+
 def render(result, folder, size=(1280, 720), options=()):
     """Draws a run's pictures into folder as the render stage draws them (frames, chart.png,
     contact sheet, animation): the series is written beside them (folder/series) and drawn by
