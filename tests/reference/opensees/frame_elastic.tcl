@@ -1,10 +1,12 @@
 # OpenSees model of frame_elastic.toml: the same nodes, elements, masses, gravity, record and
 # damping. Run from this folder: OpenSees frame_elastic.tcl (writes frame_elastic_opensees.out:
-# time and the drift of the left beam end, and periods.out).
+# time and the drift of the left beam end, and frame_elastic_periods.out). frame_nodal_masses.tcl
+# sets rho and name, then runs this.
 wipe
+if {![info exists name]} { set name frame_elastic }
+if {![info exists rho]} { set rho 7.85 }
 model BasicBuilder -ndm 2 -ndf 3
 set E 2.1e8
-set rho 7.85
 set Ac 1.491e-2; set Ic 2.517e-4
 set Ab 8.446e-3; set Ib 2.313e-4
 geomTransf Corotational 1
@@ -43,7 +45,7 @@ loadConst -time 0.0
 set lambda [eigen -fullGenLapack 2]
 set w1 [expr sqrt([lindex $lambda 0])]
 set w2 [expr sqrt([lindex $lambda 1])]
-set out [open frame_elastic_periods.out w]
+set out [open ${name}_periods.out w]
 puts $out "[expr 2*acos(-1)/$w1] [expr 2*acos(-1)/$w2]"
 close $out
 set zeta 0.02
@@ -60,6 +62,6 @@ test NormDispIncr 1.0e-12 30
 algorithm Newton
 integrator Newmark 0.5 0.25
 analysis Transient
-recorder Node -file frame_elastic_opensees.out -time -node 7 -dof 1 disp
+recorder Node -file ${name}_opensees.out -time -node 7 -dof 1 disp
 analyze 1000 0.01
 wipe
