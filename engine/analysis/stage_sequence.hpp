@@ -1,7 +1,7 @@
 // The stages of a run: [analysis] first, then each [[stage]] from where the one before ended.
 // It keeps the settings the current stage runs under and the direction toward its target, and
 // says where a state lies against that target: short of it, on it (within the round-off of an
-// increment) or past it. path_following.cpp asks it; the pattern a stage drives is set there.
+// increment) or past it. path_following.cpp asks it; the pattern a stage drives is set in path_state.cpp.
 #pragma once
 
 #include "model/model.hpp"

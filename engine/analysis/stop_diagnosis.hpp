@@ -1,7 +1,7 @@
 // Why a run stops where an increment cannot be found at any size: a non-finite state, a
 // mechanism (contact lost), a limit load, or no convergence, with what the user can do about
 // it (the round-off floor of a stiff model and where it comes from). The facts are gathered by
-// path_following.cpp; the words are chosen here.
+// path_limits.cpp; the words are chosen here.
 #pragma once
 
 #include "analysis/step_result.hpp"

@@ -75,7 +75,7 @@ struct NewtonSettings {
     // Accept an evaluated state in equilibrium whose own correction is within a hundredth of
     // the displacement tolerance, in the state and in the load factor, without taking that
     // correction: it saves the evaluation after it and moves the path by less than 1e-10 of an
-    // increment. For smooth laws (elastic members); see path_following.cpp.
+    // increment. For smooth laws (elastic members); see path_increment.cpp.
     bool accept_before_correction = false;
     // Take back half of a correction that multiplied a residual within the stagnation band
     // thirtyfold (it crossed a kink of a piecewise-linear law), up to four times an increment.
