@@ -22,6 +22,13 @@ struct SceneContext {
     const std::map<std::string, std::vector<int>>* members = nullptr; // member name → its elements
 };
 
+// The [[table]]s under `key`, each with its line; and "key[i+1]", a table's name in messages.
+using Tables = std::vector<std::pair<const toml::table*, int>>;
+Tables tables_of(TomlTableReader& top, const std::string& key);
+inline std::string indexed(const std::string& key, std::size_t i) { return key + "[" + std::to_string(i + 1) + "]"; }
+// [[ground_motion]] (ground_motion_reader.cpp).
+void read_ground_motions(TomlTableReader& top, const SceneContext& context, Model& model);
+
 // time_step, duration, integrator, alpha of a transient [analysis] or [[stage]].
 TransientSpec read_transient(TomlTableReader& r);
 // A record is followed at each of its samples only by a step that divides its DT.

@@ -1,0 +1,136 @@
+// The scene's [units], [[material]]s and [[section]]s (io/scene_builder.hpp).
+#include "scene_builder.hpp"
+
+#include "dynamics_reader.hpp"
+#include "member_geometry.hpp"
+#include "model_building.hpp"
+#include "section_shapes.hpp"
+
+#include "material/material_registry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace plastica::detail {
+
+// [units]: the scene's length and force; numbers may then be written with units.
+void SceneBuilder::read_units(TomlTableReader& top) {
+    const toml::table* t = top.table("units");
+    if (!t) return;
+    TomlTableReader r(*t, file_, "units", scene_table("units"));
+    const std::string length = r.string("length"), force = r.string("force");
+    try {
+        units_.emplace(length, force);
+    } catch (const UnitError& e) {
+        r.fail(std::string(e.what()).find("length") != std::string::npos ? "length" : "force", e.what());
+    }
+    r.finish();
+    model_.report.length_unit = length;
+    model_.report.force_unit = force;
+}
+
+void SceneBuilder::read_materials(TomlTableReader& top) {
+    const Tables list = array_of_tables(top, "material");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        TomlTableReader r(*list[i].first, file_, indexed("material", i), scene_table("material"), units());
+        const std::string name = r.string("name");
+        if (materials_.count(name)) r.fail("name", "a material named '" + name + "' exists already");
+        Material m;
+        m.E = r.number("E");
+        m.density = r.number("density");
+        if (r.has("fy")) {
+            SteelSpec s;
+            s.E = m.E;
+            s.fy = r.number("fy");
+            s.ultimate_strain = r.number("ultimate_strain");
+            if (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E)
+                r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
+            // The law and the keys of its own, as the registry lists them.
+            s.law = r.choice("law");
+            r.choose_group(s.law);
+            for (const LawParameter& p : find_material_law(s.law)->parameters) s.parameters[p.name] = r.number(p.name);
+            try {
+                make_material(s, 0.0);
+            } catch (const MaterialParameterError& e) {
+                r.fail(e.key, e.what());
+            }
+            m.steel = s;
+        } else if (r.has("law")) {
+            r.fail("law", "a material law needs a yield stress 'fy'");
+        }
+        r.finish();
+        materials_[name] = m;
+    }
+}
+
+// A key of another shape ('diameter' on a rectangle) would be read by nothing: say whose it is.
+void SceneBuilder::read_sections(TomlTableReader& top) {
+    const Tables list = array_of_tables(top, "section");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        TomlTableReader r(*list[i].first, file_, indexed("section", i), scene_table("section"), units());
+        const std::string name = r.string("name");
+        if (section_index_.count(name)) r.fail("name", "a section named '" + name + "' exists already");
+        const std::string material = r.string("material");
+        auto m = materials_.find(material);
+        if (m == materials_.end()) r.fail("material", "no [[material]] named '" + material + "'");
+        const SectionShape& shape = read_section_shape(r);
+        SectionSpec s = shape.build(r, {m->second.E, m->second.steel});
+        if (r.has("plastic"))
+            r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
+        // Hinges by default for an inelastic material, unless its law hardens: a plastic
+        // zone follows the hardening along the member, a hinge lumps it at the end.
+        const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
+        const std::string plasticity =
+            r.choice_or("plasticity", !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
+        if (plasticity != "none" && !m->second.steel)
+            r.fail("plasticity", "an inelastic section needs a material with 'fy'");
+        if (plasticity == "distributed") {
+            s.plasticity = Plasticity::distributed;
+            s.formulation = r.choice("formulation") == "force" ? Formulation::force : Formulation::displacement;
+            if (s.formulation == Formulation::force) {
+                // Lobatto points: three integrate the elastic flexibility exactly.
+                s.integration_points = r.integer_or("integration_points", default_force_based_points);
+                if (s.integration_points < 3)
+                    r.fail("integration_points", "expected a whole number from 3 to 10 for formulation = \"force\" (Gauss–Lobatto points include both ends)");
+                for (const char* key : {"segments", "segment_grading", "axial_strain"})
+                    if (r.has(key)) r.fail(key, "a force-based member has no segments: its sections take the curvature their exact moments need");
+            }
+            else s.integration_points = r.integer_or("integration_points", default_integration_points); // one point leaves a mode without stiffness
+            s.segments = r.integer("segments");
+            if (r.has("segment_grading")) {
+                if (s.segments < 3) r.fail("segment_grading", "grading needs segments = 3 or more");
+                s.segment_grading = r.number("segment_grading");
+            }
+            if (r.has("axial_strain")) {
+                if (s.segments < 2) r.fail("axial_strain", "an axial strain per segment needs segments = 2 or more");
+                s.axial_strain_per_segment = r.choice("axial_strain") == "per_segment";
+            }
+        } else {
+            if (r.has("integration_points"))
+                r.fail("integration_points", "only a section with plasticity = \"distributed\" has integration points");
+            if (r.has("formulation"))
+                r.fail("formulation", "only a section with plasticity = \"distributed\" has a formulation");
+            for (const char* key : {"segments", "segment_grading", "axial_strain"})
+                if (r.has(key)) r.fail(key, "only a section with plasticity = \"distributed\" has segments");
+            s.plasticity = plasticity == "hinges" ? Plasticity::hinges : Plasticity::none;
+        }
+        if (s.plasticity != Plasticity::none) s.steel = m->second.steel;
+        else s.fibres.clear();
+        s.name = name;
+        s.mass_per_length = m->second.density * s.area;
+        s.rotary_inertia_per_length = m->second.density * s.inertia;
+        r.finish();
+        section_index_[name] = static_cast<int>(model_.sections.size());
+        model_.sections.push_back(s);
+    }
+}
+
+int SceneBuilder::section_of(TomlTableReader& r) {
+    const std::string name = r.string("section");
+    auto it = section_index_.find(name);
+    if (it == section_index_.end()) r.fail("section", "no [[section]] named '" + name + "'");
+    return it->second;
+}
+
+} // namespace plastica::detail
