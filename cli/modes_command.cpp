@@ -114,7 +114,7 @@ int modes_command(const Args& args) {
         write_file_atomically((fs::path(folder) / "modes.csv").string(), modes_table(modes));
         // The shapes as a series: one "step" per mode, its period and frequency as the curve.
         Model shown = model;
-        shown.title = "Natural modes" + std::string(at_step > 0 ? " at step " + std::to_string(at_step) : "") +
+        shown.title = "Modes" + std::string(at_step > 0 ? " at step " + std::to_string(at_step) : "") +
                       (model.title.empty() ? "" : ": " + model.title);
         shown.report.load_label = "frequency";
         shown.report.displacement_label = "period";

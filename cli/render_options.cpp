@@ -18,6 +18,7 @@ void add_render_options(po::options_description& options) {
         ("show", po::value<std::string>(), "draw layers left out by default: reactions (the supports' forces and moments)")
         ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
         ("no-animation", "PNG frames only, no GIF")
+        ("speed", po::value<double>(), "a series in time: model seconds per second of animation, frames sampled by model time at 12 a second (default: the run in 10 s)")
         ("jobs,j", po::value<int>()->default_value(0), "drawing processes (0: one per core)");
 }
 
@@ -55,6 +56,13 @@ std::optional<int> read_render_options(const po::variables_map& vm, render::Rend
     if (vm.count("overlay")) options.overlays = vm["overlay"].as<std::vector<std::string>>();
     if (vm.count("overlay-csv")) options.reference_points = vm["overlay-csv"].as<std::vector<std::string>>();
     options.animation = vm.count("no-animation") == 0;
+    if (vm.count("speed")) {
+        options.speed = vm["speed"].as<double>();
+        if (!(options.speed > 0.0) || !std::isfinite(options.speed)) {
+            std::cerr << "plastica: --speed takes a positive number of model seconds per second of animation\n";
+            return bad_input;
+        }
+    }
     options.workers = vm["jobs"].as<int>();
     if (options.workers < 0) {
         std::cerr << "plastica: --jobs takes a whole number ≥ 0 (0: one drawing process per core)\n";

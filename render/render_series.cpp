@@ -51,6 +51,9 @@ void clear_frames(const fs::path& folder) {
     fs::create_directories(folder);
 }
 
+// The animation's frame rate (GifWriter's default).
+constexpr double frames_per_second = 12.0;
+
 std::vector<std::size_t> chosen_steps(const SeriesSummary& summary, const RenderOptions& options) {
     std::vector<std::size_t> chosen;
     if (!options.steps.empty()) {
@@ -64,6 +67,19 @@ std::vector<std::size_t> chosen_steps(const SeriesSummary& summary, const Render
         return chosen;
     }
     const std::size_t count = summary.curve.size();
+    if (summary.in_time && options.every == 1 && count > 1) {
+        // Sampled by model time: the step nearest to each frame's time, 12 frames a second.
+        const double start = summary.curve.front().time, span = summary.curve.back().time - start;
+        const double speed = options.speed > 0.0 ? options.speed : span / 10.0;
+        const double spacing = speed / frames_per_second;
+        std::size_t i = 0;
+        for (double t = start; t <= summary.curve.back().time + 1e-9 * spacing && spacing > 0.0; t += spacing) {
+            while (i + 1 < count && std::abs(summary.curve[i + 1].time - t) <= std::abs(summary.curve[i].time - t)) ++i;
+            if (chosen.empty() || chosen.back() != i) chosen.push_back(i);
+        }
+        if (chosen.empty() || chosen.back() != count - 1) chosen.push_back(count - 1);
+        return chosen;
+    }
     const int every = options.every;
     for (std::size_t i = 0; i < count; i += static_cast<std::size_t>(every)) chosen.push_back(i);
     if (chosen.back() != count - 1) chosen.push_back(count - 1);

@@ -25,6 +25,10 @@ struct RenderOptions {
     std::vector<double> shapes;           // control displacements for shapes.png (empty: none)
     double magnify = 1.0;                 // displacements drawn × this; 0: chosen (see summarise)
     bool animation = true;
+    // A series in time: model seconds per second of animation; its frames are the steps nearest
+    // to times 12 a second apart in the animation (0: the whole run in about 10 s). --every and
+    // --steps choose steps instead.
+    double speed = 0.0;
     int workers = 0;                      // drawing processes; 0: one per core
     bool quiet = false;
     // Called after each frame with the frames done and the total (progress display); may be empty.

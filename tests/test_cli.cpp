@@ -948,6 +948,16 @@ TEST_CASE("A run in time writes its time and energies, a PVD in model time, and 
     CHECK(run["dynamics"]["time"] == 10.0);
     CHECK(run["dynamics"]["largest_energy_error"].get<double>() < 1e-6);
     CHECK(run["dynamics"]["damping"]["alpha_m"].get<double>() > 0.0);
+    // Frames by model time, 12 to a second: the 10 s run in 10 s by default (121 frames), in 5 s
+    // at twice the speed.
+    auto frames = [](const fs::path& folder) {
+        return std::distance(fs::directory_iterator(folder / "frames"), fs::directory_iterator{});
+    };
+    CHECK(frames(out) == 121);
+    const fs::path faster = scratch("frame_shaken_faster");
+    REQUIRE(command("render " + out.string() + " -o " + faster.string() + " --speed 2 --no-animation -q").code == 0);
+    CHECK(frames(faster) == 61);
+    CHECK(command("render " + out.string() + " -o " + faster.string() + " --speed -1 -q").code == 2);
     for (const char* picture : {"chart.png", "hysteresis.png", "contact_sheet.png"}) {
         CAPTURE(picture);
         REQUIRE(fs::exists(out / picture));
