@@ -295,6 +295,8 @@ std::string checked_run_page(const std::string& folder) {
              {"chart.png", load + " against " + displacement},
              {"contact_sheet.png", "nine steps across the run"},
              {"shapes.png", "deformed shapes"},
+             {"hysteresis.png", "base shear against " + displacement},
+             {"energy.png", "energy accounts in time"},
              // The scene's name names the animation only where it is a plain name: a run.json
              // from elsewhere may name anything.
              {is_plain_name(scene) ? scene + ".gif" : std::string(), "the animation"}})

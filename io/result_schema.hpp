@@ -74,6 +74,7 @@ namespace name {
 inline constexpr const char* displacement = "displacement";
 inline constexpr const char* velocity = "velocity";
 inline constexpr const char* model_time = "model_time";
+inline constexpr const char* energy = "energy";
 inline constexpr const char* acceleration = "acceleration";
 inline constexpr const char* node_id = "node_id";
 inline constexpr const char* element_id = "element_id";

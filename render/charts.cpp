@@ -153,4 +153,26 @@ vtkSmartPointer<vtkImageData> draw_hysteresis_chart(const SeriesSummary& run, in
     return draw_chart(f);
 }
 
+vtkSmartPointer<vtkImageData> draw_energy_chart(const SeriesSummary& run, int width, int height) {
+    ChartFigure f;
+    f.title = "energy against time: " + (run.title.empty() ? run.scene : run.title);
+    f.x_label = "time (s)";
+    const std::string unit = run.force_unit.empty() || run.length_unit.empty() ? "" : run.force_unit + "·" + run.length_unit;
+    f.y_label = with_unit("energy", unit);
+    f.width = width;
+    f.height = height;
+    const char* names[7] = {"kinetic", "strain", "plastic dissipation", "damping", "contact", "external work", "ground motion work"};
+    const Rgb colours[7] = {{31, 78, 153}, {44, 160, 44}, {214, 39, 40}, {148, 103, 189}, {23, 190, 207}, {105, 105, 105}, {255, 127, 14}};
+    std::vector<double> time;
+    for (const CurvePoint& c : run.curve) time.push_back(c.time);
+    for (std::size_t k = 0; k < 7; ++k) {
+        std::vector<double> values;
+        bool any = false;
+        for (const CurvePoint& c : run.curve) values.push_back(c.energy[k]), any = any || c.energy[k] != 0.0;
+        if (any) f.series.push_back({names[k], time, values, colours[k], 2.0f});
+    }
+    f.legend = true;
+    return draw_chart(f);
+}
+
 } // namespace plastica::render

@@ -35,5 +35,7 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
 // A series in time: the supports' horizontal reaction (base shear) against the reported
 // displacement, its hysteresis.
 vtkSmartPointer<vtkImageData> draw_hysteresis_chart(const SeriesSummary& run, int width, int height);
+// A series in time: its energy accounts against time (the terms that are not zero throughout).
+vtkSmartPointer<vtkImageData> draw_energy_chart(const SeriesSummary& run, int width, int height);
 
 } // namespace plastica::render

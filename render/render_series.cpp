@@ -171,6 +171,7 @@ RenderReport render_series(const std::string& folder_or_pvd, const RenderOptions
         const bool on_supports = std::any_of(summary.curve.begin(), summary.curve.end(), [](const CurvePoint& c) { return c.base_shear != 0.0; });
         if (summary.in_time && on_supports)
             write_png(draw_hysteresis_chart(summary, options.width, options.height), (out / "hysteresis.png").string());
+        if (summary.in_time) write_png(draw_energy_chart(summary, options.width, options.height), (out / "energy.png").string());
         if (!options.shapes.empty()) {
             // This run's shapes, and each overlay's beside them at one scale.
             std::vector<ShapesPanel> panels{{&summary, &series}};

@@ -229,6 +229,8 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         if (grid->GetFieldData()->GetArray(result::name::model_time)) {
             s.in_time = true;
             c.time = field_value(grid, result::name::model_time);
+            if (vtkDataArray* energy = grid->GetFieldData()->GetArray(result::name::energy); energy && energy->GetNumberOfComponents() == 8)
+                for (int k = 0; k < 8; ++k) c.energy[static_cast<std::size_t>(k)] = energy->GetComponent(0, k);
         }
         if (vtkDataArray* reaction = grid->GetPointData()->GetArray(result::name::reaction))
             for (vtkIdType i = 0; i < reaction->GetNumberOfTuples(); ++i) c.base_shear -= reaction->GetComponent(i, 0);

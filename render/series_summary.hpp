@@ -9,6 +9,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct CurvePoint {
     int step = 0;
     double time = 0.0;       // model time (a series in time)
     double base_shear = 0.0; // the horizontal force on the supports (−Σ of their reactions along x)
+    // The energy accounts of a series in time (the VTU's `energy`): kinetic, strain, plastic,
+    // damping, contact, external, ground motion, and the balance's error.
+    std::array<double, 8> energy{};
     double displacement = 0.0;
     double load = 0.0;
     int contact_count = 0;

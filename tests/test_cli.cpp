@@ -958,7 +958,7 @@ TEST_CASE("A run in time writes its time and energies, a PVD in model time, and 
     REQUIRE(command("render " + out.string() + " -o " + faster.string() + " --speed 2 --no-animation -q").code == 0);
     CHECK(frames(faster) == 61);
     CHECK(command("render " + out.string() + " -o " + faster.string() + " --speed -1 -q").code == 2);
-    for (const char* picture : {"chart.png", "hysteresis.png", "contact_sheet.png"}) {
+    for (const char* picture : {"chart.png", "hysteresis.png", "energy.png", "contact_sheet.png"}) {
         CAPTURE(picture);
         REQUIRE(fs::exists(out / picture));
         CHECK(ink(out / picture) > 0.02);

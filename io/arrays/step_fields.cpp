@@ -3,6 +3,8 @@
 // (the render stage reads them from here, not from the scene file).
 #include "arrays/output_array.hpp"
 
+#include <algorithm>
+
 namespace plastica {
 
 namespace {
@@ -14,7 +16,14 @@ void fill_step_fields(const StepView& v, XmlDataset& out) {
     const StepResult& r = v.result;
     std::vector<XmlArray>& fd = out.field_data;
     fd.push_back(field_value(name::time_value, v.time));
-    if (v.has(name::model_time)) fd.push_back(field_value(name::model_time, r.time));
+    if (v.has(name::model_time)) {
+        fd.push_back(field_value(name::model_time, r.time));
+        const EnergyTerms& e = r.energy;
+        XmlArray energy = real_array(name::energy, 1, 8);
+        const double terms[8] = {e.kinetic, e.strain, e.plastic, e.damping, e.contact, e.external, e.ground, e.error};
+        std::copy(terms, terms + 8, real(energy).begin());
+        fd.push_back(std::move(energy));
+    }
     fd.push_back(field_value(name::load_factor, r.load_factor));
     fd.push_back(field_value(name::load, r.load));
     fd.push_back(field_value(name::control_displacement, r.control_displacement));
@@ -60,6 +69,7 @@ OutputGroup step_field_arrays() {
     return {{
                 {name::time_value, F, R, 1, Quantity::none, When::always, "the PVD time: step index, arc length, or model time (static steps of a scene in time a millionth of a time step apart)"},
                 {name::model_time, F, R, 1, Quantity::none, When::transient, "the step's time in the model (0 before the first transient stage)"},
+                {name::energy, F, R, 8, Quantity::none, When::transient, "kinetic, strain, plastic, damping, contact, external, ground-motion energy, and the balance's error (curve.csv's columns)"},
                 {name::load_factor, F, R, 1, Quantity::none, When::always, "λ"},
                 {name::load, F, R, 1, Quantity::reported_load, When::always, "the reported load (total in its direction, or λ)"},
                 {name::control_displacement, F, R, 1, Quantity::reported_displacement, When::always, "the controlled displacement"},
