@@ -118,13 +118,16 @@ int run_command(const Args& args) {
             steps = std::min(steps, std::ceil(*a.target_load_factor / a.initial_increment));
         if (!a.adaptive && a.target_displacement && a.scheme == Scheme::displacement_control)
             steps = std::min(steps, std::ceil(*a.target_displacement / a.initial_increment));
+        // Transient stages take their steps beyond the static limit: duration / time step each.
+        for (const StageSpec& s : model.stages)
+            if (s.scheme == Scheme::transient) steps += std::ceil(s.transient.duration / s.transient.time_step);
         const double files = std::floor(steps / every) + 2;
         const double bytes = files * (120.0 * model.nodes.size() + 150.0 * model.elements.size() + 2000.0);
         if (files > 1e6 || bytes > 20e9) {
             std::ostringstream why;
             why.precision(3);
             why << "plastica: " << scene_file << ": the series could hold " << files << " VTU files, about "
-                << bytes / 1e9 << " GB (up to " << a.max_steps << " steps, every " << every
+                << bytes / 1e9 << " GB (up to " << steps << " steps, every " << every
                 << "); pass --every K to write every K-th step, or --curves-only\n";
             std::cerr << why.str();
             return bad_input;
