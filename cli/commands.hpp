@@ -22,5 +22,6 @@ int merge_command(const Args& args);
 int report_command(const Args& args);
 int schema_command(const Args& args);
 int modes_command(const Args& args);
+int buckling_command(const Args& args);
 
 } // namespace plastica::cli

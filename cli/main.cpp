@@ -19,6 +19,7 @@ Commands:
   study SCENE      error against run time over element, fibre and increment ladders
   stability        the sweep of stiff and extreme cases, each against its expected outcome
   modes SCENE      natural periods, frequencies, effective masses and shapes (at a step: --step K)
+  buckling SCENE   critical load factors and buckling modes of the loads (about a step: --step K)
   section SCENE    moment-curvature and N-M capacity curves of a scene's sections
   sweep SCENE      many runs of a scene with keys varied (grid or Monte Carlo); sweep.csv
   merge DIR        sweep.csv from the runs a sweep folder holds (after GNU Parallel or Slurm)
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
     mallopt(M_TOP_PAD, 64 << 20);
     // Commands that draw are compiled into plastica-draw only; plastica hands them over.
     const std::map<std::string, int (*)(const Args&)> commands{
-        {"run", run_command}, {"modes", modes_command}, {"stability", stability_command}, {"report", report_command}, {"schema", schema_command},
+        {"run", run_command}, {"modes", modes_command}, {"buckling", buckling_command}, {"stability", stability_command}, {"report", report_command}, {"schema", schema_command},
 #ifdef PLASTICA_DRAWING
         {"render", render_command}, {"compare", compare_command}, {"study", study_command},
         {"section", section_command}, {"sweep", sweep_command}, {"merge", merge_command},

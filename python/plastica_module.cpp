@@ -2,7 +2,7 @@
 // of a dict), runs it with the GIL released, and keeps every converged step, so that Python gets
 // the curve and run.json as the command line writes them, each step's arrays by the result
 // schema's names (io/step_dataset.hpp), and the same files on request. python/plastica/ wraps it.
-#include "analysis/modes_at_step.hpp"
+#include "analysis/eigen_at_step.hpp"
 #include "analysis/path_following.hpp"
 #include "atomic_file.hpp"
 #include "curve_writer.hpp"

@@ -1,7 +1,7 @@
 // The shaken portal against OpenSees (tests/reference/opensees/README.md): the drift of the beam
 // in time and the periods under gravity, with massless members (the two codes then model the
 // same thing) and with the members' own mass.
-#include "analysis/modes_at_step.hpp"
+#include "analysis/eigen_at_step.hpp"
 #include "analysis/path_following.hpp"
 #include "scene_reader.hpp"
 

@@ -130,6 +130,49 @@ Eigen::VectorXd MemberSet::axial_forces() const {
     return forces;
 }
 
+std::array<int, 6> MemberSet::dofs(std::size_t e) const {
+    const ElementSpec& spec = specs_[e];
+    std::array<int, 6> out{};
+    for (int a = 0; a < 3; ++a) {
+        out[static_cast<std::size_t>(a)] = dofs_per_node * spec.node_i + a;
+        out[static_cast<std::size_t>(3 + a)] = dofs_per_node * spec.node_j + a;
+    }
+    return out;
+}
+
+Eigen::VectorXd MemberSet::axial_force_rates(const Eigen::VectorXd& rate) const {
+    Eigen::VectorXd out(static_cast<Eigen::Index>(elements_.size()));
+    Vector6 d;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        const std::array<int, 6> at = dofs(e);
+        for (int a = 0; a < 6; ++a) d[a] = rate[at[static_cast<std::size_t>(a)]];
+        out[static_cast<Eigen::Index>(e)] = elements_[e].axial_force_rate(d);
+    }
+    return out;
+}
+
+SparseMatrix MemberSet::geometric_stiffness(const Eigen::VectorXd& axial_forces, int free_count) const {
+    std::vector<Eigen::Triplet<double>> entries;
+    Matrix6 k;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+        elements_[e].geometric_stiffness(axial_forces[static_cast<Eigen::Index>(e)], k);
+        // Follower pressure's load stiffness grows with its factor: its rate per unit factor.
+        if (!pressure_.empty() && pressure_.loads(e)) k += pressure_.stiffness(e, 1.0) - pressure_.stiffness(e, 0.0);
+        const std::array<int, 6> at = dofs(e);
+        for (int a = 0; a < 6; ++a) {
+            const int row = equation_[at[static_cast<std::size_t>(a)]];
+            if (row < 0) continue;
+            for (int b = 0; b < 6; ++b) {
+                const int col = equation_[at[static_cast<std::size_t>(b)]];
+                if (col >= 0 && k(a, b) != 0.0) entries.emplace_back(row, col, k(a, b));
+            }
+        }
+    }
+    SparseMatrix G(free_count, free_count);
+    G.setFromTriplets(entries.begin(), entries.end());
+    return G;
+}
+
 void MemberSet::element_stiffness(std::size_t e, Matrix6& k) const {
     // A start whose stretch is that close to the path's lies on it but for the stiff membrane's
     // own error (the ring's: about 1e-7); one further off (a cantilever rolled by 0.25 rad a

@@ -10,6 +10,7 @@
 #include "load/follower_pressure.hpp"
 #include "model/model.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -36,12 +37,19 @@ public:
     // differ by a stretch below 1e-4 (path_extrapolation.hpp says why).
     void take_axial_forces_in_tangent(const Eigen::VectorXd& forces);
     Eigen::VectorXd axial_forces() const; // committed
+    // Linear buckling (linear_buckling.hpp), at the last evaluation: each member's axial force
+    // rate along a rate of the displacements (full DOF vector), and the geometric stiffness of
+    // given axial forces (the members' Hermitian one) with follower pressure's load stiffness
+    // per unit of its factor, on the free DOFs.
+    Eigen::VectorXd axial_force_rates(const Eigen::VectorXd& displacement_rate) const;
+    SparseMatrix geometric_stiffness(const Eigen::VectorXd& axial_forces, int free_count) const;
     bool hinge_states_consistent() const;
     bool all_elastic() const;
     double trial_yield_advance() const;
     void predict_unloading();
 
 private:
+    std::array<int, 6> dofs(std::size_t e) const; // the element's DOFs in the full vector
     void element_stiffness(std::size_t e, Matrix6& k) const; // the member's tangent and its pressure's
     bool element_tangent(std::size_t e, Matrix6& k) const;   // the same; false (and names it) if not finite
     void name_non_finite(std::size_t e) const;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "analysis/path_constraint.hpp"
+#include "analysis/linear_buckling.hpp"
 #include "analysis/path_extrapolation.hpp"
 #include "analysis/stage_sequence.hpp"
 #include "analysis/step_controller.hpp"
@@ -74,6 +75,9 @@ public:
     // The natural modes at the committed state (after run(), where it stopped), with hinges,
     // fibres and contacts in their states (dynamics/structure_modes.hpp).
     ModalResult modes(int count);
+    // Linear buckling of the current stage's loads about the committed state
+    // (analysis/linear_buckling.hpp).
+    BucklingResult buckling(int count);
     const std::vector<IterationTrace>& trace() const { return trace_; }
 
 private:

@@ -71,6 +71,15 @@ public:
     void take_axial_forces_in_tangent(const Eigen::VectorXd& forces);
     // The members' axial forces at the committed state.
     Eigen::VectorXd axial_forces() const;
+    // Linear buckling (linear_buckling.hpp), at the last evaluation: each member's axial force
+    // rate along a displacement rate (full DOF vector), and the geometric stiffness of given
+    // axial forces (one per member) with follower pressure's per unit of its factor.
+    Eigen::VectorXd axial_force_rates(const Eigen::VectorXd& displacement_rate) const {
+        return members_->axial_force_rates(displacement_rate);
+    }
+    SparseMatrix geometric_stiffness(const Eigen::VectorXd& axial_forces) const {
+        return members_->geometric_stiffness(axial_forces, free_count_);
+    }
     // Whether that tangent is finite; if not, non_finite_where() names the element.
     bool tangent_finite() const;
     const std::string& non_finite_where() const { return members_->non_finite_where(); }

@@ -20,6 +20,11 @@ ModalResult PathFollowing::modes(int count) {
     return structure_modes(system_, model_, u_, count);
 }
 
+BucklingResult PathFollowing::buckling(int count) {
+    system_.evaluate(u_, ubar_, lambda_, true, true, true);
+    return linear_buckling(system_, ubar_, lambda_, count);
+}
+
 void PathFollowing::set_factors_at(double t) {
     // From t = 0 (a scene that starts in motion) every pattern acts at factor 1 unless a series
     // drives it; after static stages each keeps the factor it was left at.

@@ -1,6 +1,7 @@
 #include "dynamics/modal_analysis.hpp"
 
 #include "solver/linear_solver.hpp"
+#include "solver/shifted_inverse.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -8,32 +9,11 @@
 #include <Spectra/SymGEigsShiftSolver.h>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace plastica {
 
 namespace {
-
-// y = (K − σM)⁻¹ x, the operator Spectra's shift-invert mode asks for.
-class ShiftedInverse {
-public:
-    using Scalar = double;
-    ShiftedInverse(const SparseMatrix& K, const SparseMatrix& M) : K_(K), M_(M) {}
-    Eigen::Index rows() const { return K_.rows(); }
-    Eigen::Index cols() const { return K_.cols(); }
-    void set_shift(double sigma) {
-        const SparseMatrix shifted = K_ - sigma * M_;
-        if (!solver_.factorize(shifted)) throw ModalError("K − σM is singular at the shift σ = " + std::to_string(sigma));
-    }
-    void perform_op(const double* x_in, double* y_out) const {
-        const Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
-        Eigen::Map<Eigen::VectorXd>(y_out, rows()) = solver_.solve(x);
-    }
-
-private:
-    const SparseMatrix& K_;
-    const SparseMatrix& M_;
-    LinearSolver solver_;
-};
 
 double shift_for(const SparseMatrix& K, const SparseMatrix& M) {
     LinearSolver probe;
@@ -78,13 +58,18 @@ NaturalModes lowest_modes(const SparseMatrix& K, const SparseMatrix& M, int coun
         Spectra::SparseSymMatProd<double> mass(M);
         const Eigen::Index nev = count;
         const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * nev + 1, 20));
-        Spectra::SymGEigsShiftSolver<ShiftedInverse, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert> solver(
-            op, mass, nev, ncv, sigma);
-        solver.init();
-        solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
-        if (solver.info() != Spectra::CompInfo::Successful) throw ModalError("the Lanczos iteration for the modes did not converge");
-        const Eigen::VectorXd values = solver.eigenvalues();
-        out.shapes = solver.eigenvectors();
+        using Solver = Spectra::SymGEigsShiftSolver<ShiftedInverse, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>;
+        std::unique_ptr<Solver> solver;
+        try { // the shift is factorised as the solver is made
+            solver = std::make_unique<Solver>(op, mass, nev, ncv, sigma);
+            solver->init();
+            solver->compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
+        } catch (const std::runtime_error& e) {
+            throw ModalError(std::string("K − σM: ") + e.what());
+        }
+        if (solver->info() != Spectra::CompInfo::Successful) throw ModalError("the Lanczos iteration for the modes did not converge");
+        const Eigen::VectorXd values = solver->eigenvalues();
+        out.shapes = solver->eigenvectors();
         out.omega_squared.assign(values.data(), values.data() + values.size());
     }
     // Each shape scaled to unit modal mass, its largest component positive (a sign one can compare).

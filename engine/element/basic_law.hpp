@@ -7,6 +7,7 @@
 #include "element/hinge_ends.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,9 @@ public:
     virtual void commit() = 0;
     virtual void revert() = 0;
     virtual bool has_hinges() const { return false; }
+    // Ends whose moment is released (a pin inside a frame): the transverse shape a geometric
+    // stiffness integrates differs there.
+    virtual std::array<bool, 2> released_ends() const { return {false, false}; }
     // Which ends carry capacity rows and pseudo-springs (element/hinge_ends.hpp), re-decided
     // between steps where two members meet (analysis/hinge_allocation.hpp).
     virtual void serve_hinge_ends(const HingeEnds& /*ends*/) {}

@@ -1,5 +1,6 @@
 #include "element/corotational_beam.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace plastica {
@@ -106,6 +107,48 @@ void CorotationalBeam::tangent(Matrix6& k, double axial_force) const {
     const double w2[3] = {kb(1, 0), kb(1, 1), kb(1, 2)}, w5[3] = {kb(2, 0), kb(2, 1), kb(2, 2)};
     fill(2, w2, 0.0, 0.0);
     fill(5, w5, 0.0, 0.0);
+}
+
+namespace {
+// The rows of B at a chord of length L along (c, s): the stretch's r, and the end rotations'
+// relative to the chord, b + e₃ and b + e₆ with b = −z/L.
+struct BasicRows {
+    Vector6 stretch, rotation_i, rotation_j;
+    BasicRows(double c, double s, double L) {
+        const ChordVectors chord(c, s);
+        for (int k = 0; k < 6; ++k) {
+            stretch[k] = chord.r[k];
+            rotation_i[k] = rotation_j[k] = -chord.z[k] / L;
+        }
+        rotation_i[2] += 1.0;
+        rotation_j[5] += 1.0;
+    }
+};
+} // namespace
+
+double CorotationalBeam::axial_force_rate(const Vector6& rate) const {
+    Eigen::Matrix3d kb;
+    law_->trial_tangent(kb);
+    const BasicRows B(c_trial_, s_trial_, length_trial_);
+    return kb(0, 0) * B.stretch.dot(rate) + kb(0, 1) * B.rotation_i.dot(rate) + kb(0, 2) * B.rotation_j.dot(rate);
+}
+
+void CorotationalBeam::geometric_stiffness(double N, Matrix6& k) const {
+    const double L = length_trial_;
+    const ChordVectors chord(c_trial_, s_trial_);
+    const Eigen::Map<const Vector6> z(chord.z);
+    k.noalias() = (N / L) * z * z.transpose();
+    const BasicRows B(c_trial_, s_trial_, L);
+    const std::array<bool, 2> released = law_->released_ends();
+    if (released[0] && released[1]) return;
+    if (released[0] || released[1]) {
+        const Vector6& held = released[0] ? B.rotation_j : B.rotation_i;
+        k.noalias() += (N * L / 5.0) * held * held.transpose();
+        return;
+    }
+    const double a = N * L / 30.0;
+    k.noalias() += 4.0 * a * (B.rotation_i * B.rotation_i.transpose() + B.rotation_j * B.rotation_j.transpose());
+    k.noalias() -= a * (B.rotation_i * B.rotation_j.transpose() + B.rotation_j * B.rotation_i.transpose());
 }
 
 void CorotationalBeam::commit() {

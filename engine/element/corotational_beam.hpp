@@ -40,6 +40,14 @@ public:
     // The same with the geometric stiffness of another axial force (the trial's stretch may be
     // an extrapolation's error, which a stiff membrane turns into a wild force).
     void tangent(Matrix6& k, double axial_force) const;
+    // Linear buckling's terms at the trial state (analysis/linear_buckling.hpp): the rate of
+    // the axial force along a rate of the nodal displacements, and the geometric stiffness of
+    // an axial force N with the member's transverse shape cubic between its ends (Hermitian;
+    // the chord's N/L z zᵀ plus N·L/30·[4 −1; −1 4] on the end rotations relative to the chord,
+    // N·L/5 on the one end left where the other's moment is released). The tangent above
+    // carries the chord's part only: the nonlinear path converges to the same loads with mesh.
+    double axial_force_rate(const Vector6& displacement_rate) const;
+    void geometric_stiffness(double axial_force, Matrix6& k) const;
     void commit();
     void revert();
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }

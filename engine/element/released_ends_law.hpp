@@ -23,6 +23,7 @@ public:
     void commit() override;
     void revert() override;
     bool has_hinges() const override { return inner_->has_hinges(); }
+    std::array<bool, 2> released_ends() const override { return released_; }
     void serve_hinge_ends(const HingeEnds& ends) override { inner_->serve_hinge_ends(ends); }
     HingeReport hinge(int end) const override { return inner_->hinge(end); }
     std::vector<SectionReport> sections() const override { return inner_->sections(); }
