@@ -39,6 +39,18 @@ SeriesTime series_time(const std::string& asked, bool left_out, const Model& mod
     return asked == "arc_length" ? SeriesTime::arc_length : SeriesTime::step;
 }
 
+// What a user reads when the path passes a critical point: a bifurcation left behind is a
+// warning (the path goes on where the structure would not), one followed and a limit are notes.
+std::string critical_point_message(const CriticalPoint& c) {
+    std::ostringstream s;
+    s << (c.kind == CriticalKind::bifurcation && !c.followed ? "warning: " : "note: ") << "step " << c.step << " passed a "
+      << (c.kind == CriticalKind::bifurcation ? "bifurcation" : "limit point") << " at load factor " << c.load_factor;
+    if (c.kind == CriticalKind::limit) s << " (the load's maximum along the path)";
+    else if (c.followed) s << "; the path follows the buckled branch";
+    else s << ": the path goes on along the fundamental branch, unstable beyond it ([analysis] bifurcation = \"switch\" "
+              "follows the buckled one; `plastica buckling` gives the modes)";
+    return s.str();
+}
 
 std::atomic<bool> stop_requested{false};
 extern "C" void request_stop(int) { stop_requested = true; }
@@ -199,6 +211,10 @@ int run_command(const Args& args) {
     const AnalysisSpec& a = model.analysis;
     auto track = [&](const StepResult& r) {
         report.last = final_state(model, r);
+        if (r.critical) {
+            progress.finish();
+            std::cerr << "plastica: " << scene_file << ": " << critical_point_message(*r.critical) << "\n";
+        }
         if (r.load > report.peak_load) {
             report.peak_load = r.load;
             report.peak_load_displacement = r.control_displacement;

@@ -73,6 +73,8 @@ std::string curve_header(const Model& model) {
     if (!model.self_contact.empty()) header += ",surface_contacts,surface_contact_force";
     for (int p : result::active_patterns(model)) header += ",factor_" + model.patterns[static_cast<std::size_t>(p)];
     for (const std::string& name : reaction_columns(model)) header += ',' + name;
+    // An elastic path: the critical point a step passed, and where it lies (empty elsewhere).
+    if (model.tracks_critical_points()) header += ",critical_point,critical_load_factor";
     // Motion in time: the time and the energy accounts (EnergyTerms).
     if (model.transient())
         header += ",time,kinetic_energy,strain_energy,plastic_dissipation,damping_work,contact_work,external_work,"
@@ -98,6 +100,10 @@ std::string curve_row(const Model& model, const StepResult& r) {
     for (const SupportReaction& s : support_reactions(model, r))
         for (int d = 0; d < dofs_per_node; ++d)
             if (s.reported[d]) row << ',' << s.force[d];
+    if (model.tracks_critical_points()) {
+        if (r.critical) row << ',' << to_string(r.critical->kind) << ',' << r.critical->load_factor;
+        else row << ",,";
+    }
     if (model.transient()) {
         const EnergyTerms& e = r.energy;
         row << ',' << r.time << ',' << e.kinetic << ',' << e.strain << ',' << e.plastic << ',' << e.damping << ',' << e.contact

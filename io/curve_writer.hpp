@@ -2,7 +2,8 @@
 // control_displacement, iterations, contact_count, hinge_count, plastic_hinge_count,
 // base_reaction, contact_length, negative_pivots, accepted_by, residual, then one column per
 // DOF a [[support]] fixes (support1_fx, support1_fy, support2_mz, …: the force the support
-// exerts on the structure). Each row goes out in one write, so a run stopped half-way leaves a
+// exerts on the structure), and for an elastic path critical_point (bifurcation, limit_point or
+// empty) and critical_load_factor (where it lies; empty elsewhere). Each row goes out in one write, so a run stopped half-way leaves a
 // complete prefix; a row that cannot be written whole (a full disk) is taken back.
 #pragma once
 

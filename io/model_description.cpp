@@ -107,6 +107,14 @@ Json describe_model(const Model& m) {
         patterns.push_back(e);
     }
     j["load_patterns"] = patterns;
+    // Imperfections from buckling modes: the nodes above are the imperfect ones.
+    if (!m.imperfections.empty()) {
+        Json imperfections = Json::array();
+        for (const ImperfectionSpec& i : m.imperfections)
+            imperfections.push_back({{"mode", i.mode}, {"amplitude", i.amplitude}, {"pattern", m.patterns[static_cast<std::size_t>(i.pattern)]},
+                                     {"critical_load_factor", i.load_factor}});
+        j["imperfections"] = imperfections;
+    }
     if (!m.springs.empty()) j["foundation_springs"] = m.springs.size();
     const AnalysisSpec& a = m.analysis;
     j["analysis"] = {{"scheme", scheme_name(a.scheme)},

@@ -125,7 +125,9 @@ std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::p
             return at == header.end() ? -1 : static_cast<int>(at - header.begin());
         };
         const int step_column = column("step"), load_column = column("load"), hinge_column = column("hinge_count");
-        int first = -1, last = -1, yield = -1, peak = -1;
+        const int critical_column = column("critical_point");
+        int first = -1, last = -1, yield = -1, peak = -1, critical = -1;
+        std::string critical_kind;
         double peak_load = -1e300;
         while (step_column >= 0 && load_column >= 0 && std::getline(in, line)) {
             std::vector<std::string> cells;
@@ -138,9 +140,15 @@ std::vector<std::pair<fs::path, std::string>> key_frames(const std::vector<fs::p
             last = step;
             if (value > peak_load) peak_load = value, peak = step;
             if (yield < 0 && hinge_column >= 0 && std::atoi(cells[static_cast<std::size_t>(hinge_column)].c_str()) > 0) yield = step;
+            if (critical < 0 && critical_column >= 0 && static_cast<std::size_t>(critical_column) < cells.size() &&
+                (cells[static_cast<std::size_t>(critical_column)] == "bifurcation" || cells[static_cast<std::size_t>(critical_column)] == "limit_point")) {
+                critical = step;
+                critical_kind = cells[static_cast<std::size_t>(critical_column)] == "bifurcation" ? "bifurcation" : "limit point";
+            }
         }
         if (first >= 0) events.push_back({first, "start"});
         if (yield >= 0) events.push_back({yield, "first yield"});
+        if (critical >= 0) events.push_back({critical, critical_kind});
         if (peak >= 0) events.push_back({peak, "peak " + load_label});
         if (last >= 0) events.push_back({last, "last step"});
     }

@@ -58,6 +58,7 @@ bool present(const Array& a, const Model& m) {
     case When::self_contact: return !m.self_contact.empty();
     case When::members: return !m.member_names.empty();
     case When::transient: return m.transient();
+    case When::critical_step: return m.tracks_critical_points();
     case When::patterns: return !active_patterns(m).empty();
     case When::moving_base_patterns: return m.has_moving_base() && !active_patterns(m).empty();
     }
@@ -107,7 +108,8 @@ std::string markdown_table() {
                                       "springs or a rigid base", "a moving base", "stages (`[[stage]]`)",
                                       "two or more load patterns", "a moving base and two or more load patterns",
                                       "released member ends", "self-contact (`[[self_contact]]`)",
-                                      "members (`[[line]]`, `[[arc]]`)", "a transient stage"};
+                                      "members (`[[line]]`, `[[arc]]`)", "a transient stage",
+                                      "an elastic path, in the step that passes a bifurcation or limit point"};
     std::ostringstream out;
     out << "| array | where | type | components | unit | written for | meaning |\n"
         << "|---|---|---|---|---|---|---|\n";

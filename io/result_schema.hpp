@@ -41,6 +41,7 @@ enum class When {
     self_contact,            // [[self_contact]]
     members,                 // [[line]]s or [[arc]]s (not only [[element]]s given one by one)
     transient,               // a stage integrates in time
+    critical_step,           // an elastic path's step that passes a bifurcation or limit point (that step only)
 };
 
 struct Array {
@@ -73,6 +74,9 @@ std::string markdown_table();
 namespace name {
 inline constexpr const char* displacement = "displacement";
 inline constexpr const char* velocity = "velocity";
+inline constexpr const char* critical_mode = "critical_mode";
+inline constexpr const char* critical_point = "critical_point";
+inline constexpr const char* critical_load_factor = "critical_load_factor";
 inline constexpr const char* model_time = "model_time";
 inline constexpr const char* energy = "energy";
 inline constexpr const char* acceleration = "acceleration";
@@ -139,6 +143,7 @@ inline constexpr const char* base_pattern = "pattern";
 // Codes of the Int32 states.
 enum class HingeCode : int { elastic = 0, yielding = 1, plastic = 2, failed = 3 };
 enum class ContactCode : int { open = 0, closed = 1 };
+enum class CriticalCode : int { bifurcation = 1, limit_point = 2 };
 enum class BaseKind : int { spring_anchor = 0, rigid_line = 1 };
 // `support`: the sum of the DOFs a node's support fixes.
 inline constexpr int fixes_ux = 1, fixes_uy = 2, fixes_rz = 4;

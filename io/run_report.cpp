@@ -89,6 +89,16 @@ std::string to_json(const RunReport& r) {
         j["negative_pivot_steps"] = r.summary.negative_pivot_steps;
         j["first_negative_pivot_step"] = r.summary.first_negative_pivot_step;
     }
+    // Bifurcations and limit points the path passed, each located (the modes are in the VTU of
+    // the step that passed it), and whether the run ended on a branch that is not stable.
+    if (!r.summary.critical_points.empty()) {
+        Json points = Json::array();
+        for (const CriticalPoint& c : r.summary.critical_points)
+            points.push_back({{"kind", to_string(c.kind)}, {"step", c.step}, {"load_factor", c.load_factor}, {"load", c.load},
+                              {"load_alignment", c.load_alignment}, {"followed", c.followed}});
+        j["critical_points"] = points;
+        j["ends_unstable"] = r.summary.ends_unstable;
+    }
     // Which rule accepted the steps: the residual within its tolerance, or round-off
     // stagnation within ten times it (never more).
     j["accepted_by"] = {{"residual", r.summary.accepted_by_residual}, {"stagnation", r.summary.accepted_by_stagnation}};

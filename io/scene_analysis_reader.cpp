@@ -142,6 +142,7 @@ void SceneBuilder::read_analysis(TomlTableReader& top) {
     a.min_increment = r.number_or("min_increment", a.initial_increment * 1e-6, step);
     a.max_increment = r.number_or("max_increment", 0.0 + a.initial_increment * 10.0, step);
     a.adaptive = r.boolean_or("adaptive", a.scheme != Scheme::load_control);
+    a.bifurcation = r.choice("bifurcation") == "switch" ? BifurcationRule::switch_branch : BifurcationRule::report;
     // Fibre branches along a member settle in about three extra iterations at any step
     // size (Newton freezes them from its third iteration): a plastic zone asks for more.
     a.desired_iterations = r.integer_or("desired_iterations", model_.has_plasticity(Plasticity::distributed) ? 8 : 5);

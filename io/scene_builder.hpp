@@ -91,6 +91,9 @@ private:
     std::string describe_node(int n) const { return mesh_.describe(n); }
     SceneContext dynamics_context();
     void read_analysis(TomlTableReader& top);
+    // [[imperfection]]s, applied to the nodes once the loads and the analysis are known
+    // (scene_imperfection_reader.cpp).
+    void read_imperfections(TomlTableReader& top);
     void read_transient_analysis(TomlTableReader& r);
     DofRef read_control(TomlTableReader& r, int pattern);
     void read_report(TomlTableReader& top);

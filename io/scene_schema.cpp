@@ -421,6 +421,16 @@ TableSpec self_contact_table_spec() {
     }};
 }
 
+TableSpec imperfection_table_spec() {
+    return {"imperfection", true, "", {
+        whole("mode", 1, 1000).needed().about("the buckling mode of the pattern's loads on the perfect geometry (1: the lowest)"),
+        number("amplitude", dimension::length).needed()
+            .about("the largest nodal translation of the scaled mode, signed (its sign flips the shape); e.g. L/300 of a column"),
+        pattern_key("the load pattern whose buckling modes are taken (that of `[analysis]` when left out)")
+            .follows("`[analysis]`'s pattern"),
+    }};
+}
+
 // The keys that name and steer a controlled DOF, in [analysis] and [[stage]].
 std::vector<KeySpec> control_keys(const std::string& point_default, const std::string& dof_default) {
     return {
@@ -462,6 +472,10 @@ TableSpec analysis_table_spec() {
         number("target_displacement").positive().dimension_follows("a length; a rotation in radians for `rz`")
             .about("the stop at the control DOF's displacement, signed as reported; needs `control_at`"),
         pattern_key("the load pattern λ drives (it must hold a load, a pressure, a prescribed displacement or a moving base)"),
+        one_of("bifurcation", {"report", "switch"}).fallback(std::string("report"))
+            .about("at a bifurcation (one more negative pivot with the critical mode orthogonal to the load), `report` "
+                   "locates it, warns and goes on along the fundamental path; `switch` goes on along the buckled branch, its "
+                   "first step started along the mode (docs/stability.md)"),
         flag("allow_crossing", false)
             .about("without `[[self_contact]]`, a structure passing through itself, through its symmetry line (`mirror_x`) or "
                    "below the base at a node the base does not hold stops the run (exit 3); `true` lets it pass (a cantilever "
@@ -520,7 +534,7 @@ std::vector<TableSpec> build_schema() {
     std::vector<TableSpec> tables{scene_table_spec(), units_table_spec(), material_table_spec(), section_table_spec(), node_table_spec(),
             line_table_spec(), arc_table_spec(), element_table_spec(), support_table_spec(), load_table_spec(),
             distributed_load_table_spec(), prescribed_table_spec(), foundation_table_spec(), self_contact_table_spec(),
-            analysis_table_spec(), stage_table_spec(), report_table_spec()};
+            imperfection_table_spec(), analysis_table_spec(), stage_table_spec(), report_table_spec()};
     for (TableSpec& t : dynamics_table_specs()) tables.push_back(std::move(t));
     return tables;
 }

@@ -96,17 +96,22 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
     return run;
 }
 
+// A scene (a file or TOML text) read with its overrides, and `find` at step `step` of its
+// run, without the GIL.
+template <class Found, class Find>
+Found at_step_of_scene(const std::string& source, bool is_text, const std::string& name,
+                       const std::vector<std::pair<std::string, std::string>>& overrides, int count, int step, Find find) {
+    std::vector<Override> parsed;
+    for (const auto& [path, value] : overrides) parsed.push_back({path, value});
+    py::gil_scoped_release unlocked;
+    const Model model = is_text ? read_scene_text(source, name.empty() ? "scene" : name, parsed) : read_scene(source, parsed);
+    return find(model, count, step);
+}
+
 // The natural modes of a scene at step `step` of its run (plastica modes): one dict per mode.
 py::list modes_of_scene(const std::string& source, bool is_text, const std::string& name,
                         const std::vector<std::pair<std::string, std::string>>& overrides, int count, int step) {
-    std::vector<Override> parsed;
-    for (const auto& [path, value] : overrides) parsed.push_back({path, value});
-    ModesAtStep found;
-    {
-        py::gil_scoped_release unlocked;
-        const Model model = is_text ? read_scene_text(source, name.empty() ? "scene" : name, parsed) : read_scene(source, parsed);
-        found = modes_at_step(model, count, step);
-    }
+    const ModesAtStep found = at_step_of_scene<ModesAtStep>(source, is_text, name, overrides, count, step, modes_at_step);
     py::list out;
     for (const ModeRow& m : found.modes.modes) {
         py::dict row;
@@ -118,6 +123,25 @@ py::list modes_of_scene(const std::string& source, bool is_text, const std::stri
         row["effective_mass_y"] = m.effective_mass_y;
         row["share_x"] = found.modes.mass_x > 0.0 ? m.effective_mass_x / found.modes.mass_x : 0.0;
         row["share_y"] = found.modes.mass_y > 0.0 ? m.effective_mass_y / found.modes.mass_y : 0.0;
+        py::array_t<double> shape({static_cast<py::ssize_t>(m.shape.size() / 3), static_cast<py::ssize_t>(3)});
+        std::copy(m.shape.begin(), m.shape.end(), shape.mutable_data());
+        row["shape"] = shape;
+        out.append(row);
+    }
+    return out;
+}
+
+// The critical load factors and buckling modes of a scene's loads at step `step` of its run
+// (plastica buckling): one dict per mode.
+py::list buckling_of_scene(const std::string& source, bool is_text, const std::string& name,
+                           const std::vector<std::pair<std::string, std::string>>& overrides, int count, int step) {
+    const BucklingAtStep found = at_step_of_scene<BucklingAtStep>(source, is_text, name, overrides, count, step, buckling_at_step);
+    py::list out;
+    for (const BucklingMode& m : found.buckling.modes) {
+        py::dict row;
+        row["mode"] = m.mode;
+        row["load_factor"] = m.load_factor;
+        row["above_state"] = m.above_state;
         py::array_t<double> shape({static_cast<py::ssize_t>(m.shape.size() / 3), static_cast<py::ssize_t>(3)});
         std::copy(m.shape.begin(), m.shape.end(), shape.mutable_data());
         row["shape"] = shape;
@@ -212,6 +236,8 @@ PYBIND11_MODULE(_plastica, m) {
         .def("write", &write_run, py::arg("folder"));
     m.def("run_scene", &run_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"));
     m.def("modes_of_scene", &modes_of_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),
+          py::arg("count"), py::arg("step"));
+    m.def("buckling_of_scene", &buckling_of_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),
           py::arg("count"), py::arg("step"));
     m.attr("version") = PLASTICA_VERSION;
 }

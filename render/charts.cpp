@@ -3,6 +3,7 @@
 #include "legend_corner.hpp"
 #include "offscreen_window.hpp"
 #include "palette.hpp"
+#include "result_schema.hpp"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -128,6 +129,12 @@ vtkSmartPointer<vtkImageData> draw_curve_chart(const std::vector<const SeriesSum
     };
     bool marked = false;
     if (main.inelastic) marked |= mark("first yield", colour::hinge_yielding_high, [](const CurvePoint& c) { return c.hinge_count > 0; });
+    // The first bifurcation and limit point the path passed, at the step that passed each.
+    const int bifurcation = static_cast<int>(result::CriticalCode::bifurcation), limit = static_cast<int>(result::CriticalCode::limit_point);
+    if (!main.in_time) {
+        marked |= mark("bifurcation", {148, 103, 189}, [&](const CurvePoint& c) { return c.critical == bifurcation; });
+        marked |= mark("limit point", {188, 189, 34}, [&](const CurvePoint& c) { return c.critical == limit; });
+    }
     // Contact spreads where more nodes touch than at the start and than one (a ring first
     // touches at a node). A zone that grows from the first loaded step on (a pipe on a bed) has
     // no such point: the mark would only sit on the origin, so it is left out.

@@ -83,12 +83,14 @@ std::vector<std::size_t> chosen_steps(const SeriesSummary& summary, const Render
     const int every = options.every;
     for (std::size_t i = 0; i < count; i += static_cast<std::size_t>(every)) chosen.push_back(i);
     if (chosen.back() != count - 1) chosen.push_back(count - 1);
-    // The steps a report names are drawn whatever --every skips: the first yield and the peak.
+    // The steps a report names are drawn whatever --every skips: the first yield, the peak and
+    // the first critical point.
     std::size_t peak = 0;
     for (std::size_t i = 0; i < count; ++i)
         if (summary.curve[i].load > summary.curve[peak].load) peak = i;
     const auto yielded = std::find_if(summary.curve.begin(), summary.curve.end(), [](const CurvePoint& c) { return c.hinge_count > 0; });
-    for (std::size_t key : {peak, static_cast<std::size_t>(yielded - summary.curve.begin())})
+    const auto critical = std::find_if(summary.curve.begin(), summary.curve.end(), [](const CurvePoint& c) { return c.critical != 0; });
+    for (std::size_t key : {peak, static_cast<std::size_t>(yielded - summary.curve.begin()), static_cast<std::size_t>(critical - summary.curve.begin())})
         if (key < count && !std::binary_search(chosen.begin(), chosen.end(), key)) chosen.insert(std::upper_bound(chosen.begin(), chosen.end(), key), key);
     return chosen;
 }

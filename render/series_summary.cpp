@@ -226,6 +226,10 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
         c.load = field_value(grid, result::name::load);
         if (grid->GetFieldData()->GetArray(result::name::contact_count)) c.contact_count = static_cast<int>(field_value(grid, result::name::contact_count));
         if (grid->GetFieldData()->GetArray(result::name::hinge_count)) c.hinge_count = static_cast<int>(field_value(grid, result::name::hinge_count));
+        if (grid->GetFieldData()->GetArray(result::name::critical_point)) {
+            c.critical = static_cast<int>(field_value(grid, result::name::critical_point));
+            c.critical_load_factor = field_value(grid, result::name::critical_load_factor);
+        }
         if (grid->GetFieldData()->GetArray(result::name::model_time)) {
             s.in_time = true;
             c.time = field_value(grid, result::name::model_time);

@@ -29,6 +29,10 @@ struct CurvePoint {
     double load = 0.0;
     int contact_count = 0;
     int hinge_count = 0;
+    // The critical point this step passed (the VTU's critical_point): 0 none, 1 a bifurcation,
+    // 2 a limit point; and where it lies.
+    int critical = 0;
+    double critical_load_factor = 0.0;
 };
 
 struct ColourField {

@@ -3,11 +3,15 @@
 #include "analysis/eigen_at_step.hpp"
 #include "analysis/path_following.hpp"
 #include "scene_reader.hpp"
+#include "solver/linear_solver.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 using namespace plastica;
 
@@ -185,4 +189,231 @@ TEST_CASE("A ring under hydrostatic pressure buckles at 3EI/R³", "[buckling]") 
     CHECK(found.modes[0].load_factor - 1.0 < 1.25 * h2);
     CHECK(std::abs(found.modes[1].load_factor / found.modes[0].load_factor - 1.0) < 1e-4);
     CHECK(std::abs(found.modes[2].load_factor * 3.0 / 8.0 - 1.0) < 2.0 * h2);
+}
+
+namespace {
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+}
+
+struct Path {
+    std::vector<StepResult> steps;
+    RunSummary summary;
+};
+
+Path follow(const std::string& scene) {
+    PathFollowing analysis(read_scene_text(scene, "buckling.toml"));
+    Path out;
+    out.summary = analysis.run({[&](const StepResult& r) { out.steps.push_back(r); }});
+    return out;
+}
+
+// The perfect pinned column of column() on 20 elements, nearly inextensible (EA/EI = 1e7),
+// followed by arc length with the given bifurcation rule until its top has come down by `travel`.
+std::string perfect_column(const char* rule, double travel) {
+    std::string s = column("\"ux\", \"uy\"", "\"ux\"", 20);
+    const std::string analysis = s.substr(s.find("[analysis]"));
+    s = s.substr(0, s.find("[analysis]"));
+    s.replace(s.find("A = 10.0"), 8, "A = 1.0e4");
+    return s + "[analysis]\nscheme = \"arc_length\"\nincrement = 0.05\nbifurcation = \"" + rule +
+           "\"\ncontrol_at = [0.0, 1.0]\ncontrol_dof = \"uy\"\ntarget_displacement = " + number(travel) +
+           "\nmax_steps = 500\n";
+}
+
+} // namespace
+
+TEST_CASE("A perfect column reports its bifurcation and ends unstable without switching", "[buckling]") {
+    // A travel of 2e-6 is a load factor of 20: past the first mode (9.87), short of the second (39.5).
+    const Path p = follow(perfect_column("report", 2e-6));
+    REQUIRE(p.summary.critical_points.size() == 1);
+    const CriticalPoint& c = p.summary.critical_points.front();
+    CHECK(c.kind == CriticalKind::bifurcation);
+    CHECK(!c.followed);
+    // Located where the path's own tangent (the chord's geometric stiffness) turns indefinite:
+    // on 20 elements 0.21 % above Euler's load (1 + π²/(12·20²)·…, measured 1.00206).
+    CHECK(std::abs(c.load_factor / (pi * pi) - 1.00206) < 2e-4);
+    CHECK(c.load_alignment < 1e-6);
+    CHECK(p.summary.ends_unstable);
+    CHECK(p.summary.reason.find("past a bifurcation at load factor") != std::string::npos);
+}
+
+TEST_CASE("A perfect pinned column switched to its buckled branch follows the elastica", "[buckling]") {
+    // Timoshenko & Gere, Theory of Elastic Stability, 1961, §2.7: P/P_cr = (2K(k)/π)² with
+    // k = sin(θ₀/2), θ₀ the end rotation. On 20 elements the discrete column buckles 0.21 %
+    // above P_cr and its elastica stays within that of the continuous one; 0.5 % bounds it.
+    const Path p = follow(perfect_column("switch", 1.0));
+    REQUIRE(p.summary.critical_points.size() >= 1);
+    CHECK(p.summary.critical_points.front().followed);
+    double largest_rotation = 0.0;
+    for (const StepResult& r : p.steps) {
+        const double theta = std::abs(r.displacement[2]);
+        if (theta < 0.05 || theta > 120.0 * pi / 180.0) continue;
+        const double k = std::sin(theta / 2.0);
+        const double exact = std::pow(2.0 * std::comp_ellint_1(k) / pi, 2) * pi * pi;
+        INFO("θ₀ = " << theta * 180.0 / pi << "°: " << r.load_factor << " against " << exact);
+        CHECK(std::abs(r.load_factor / exact - 1.0) < 5e-3);
+        largest_rotation = std::max(largest_rotation, theta);
+    }
+    CHECK(largest_rotation > 110.0 * pi / 180.0);
+}
+
+TEST_CASE("A column given its first mode as an imperfection of L/1000 amplifies it by 1/(1 − P/P_cr)", "[buckling]") {
+    // Timoshenko & Gere 1961, §1.12: a pinned column of initial shape e₀ sin(πx/L) deflects to
+    // e₀/(1 − P/P_E) at midspan. On 40 elements the path's own P_cr is 5e-4 above P_E, which
+    // moves the amplification at P/P_E = 0.8 by 4 × 5e-4; the cubic mode differs from the sine
+    // by less (3e-7 of its amplitude).
+    std::string scene = perfect_column("report", 1.0);
+    scene.replace(scene.find("elements = 20"), 13, "elements = 40");
+    scene = scene.substr(0, scene.find("[analysis]")) + R"(
+[[imperfection]]
+mode = 1
+amplitude = 0.001
+[analysis]
+scheme = "load_control"
+increment = 0.05
+target_load_factor = 0.8
+)";
+    // The load factor scales a unit load: the target is P = 0.8 in units of … the column's P_E = π².
+    scene.replace(scene.find("fy = -1.0"), 9, "fy = -9.869604401089358");
+    const Model model = read_scene_text(scene, "imperfect.toml");
+    REQUIRE(model.imperfections.size() == 1);
+    CHECK(model.imperfections.front().load_factor == Approx(1.0).epsilon(1e-4)); // the mode's own factor
+    // The mid node lies 0.001 off the axis: the mode's largest translation.
+    const Node& mid = model.nodes[20];
+    CHECK(std::abs(mid.x) == Approx(0.001).epsilon(1e-9));
+    const Path p = follow(scene);
+    REQUIRE(p.summary.status == RunStatus::completed);
+    for (const StepResult& r : p.steps) {
+        if (r.step == 0) continue;
+        const double ratio = r.load_factor, e0 = mid.x;
+        const double total = e0 + r.displacement[3 * 20];
+        INFO("P/P_E = " << ratio << ": " << total / e0 << " against " << 1.0 / (1.0 - ratio));
+        CHECK(std::abs(total / e0 * (1.0 - ratio) - 1.0) < 3e-3);
+    }
+}
+
+namespace {
+
+// The slope dλ/dθ of a path's load factor against the joint rotation θ (node `joint`) past its
+// bifurcation λ_c: λ − λ_c = a θ + b θ² by least squares over 0.003 ≤ |θ| ≤ 0.03.
+double branch_slope(const Path& p, int joint, double lambda_c) {
+    double s11 = 0, s12 = 0, s22 = 0, r1 = 0, r2 = 0;
+    int used = 0;
+    for (const StepResult& r : p.steps) {
+        const double theta = r.displacement[3 * joint + 2];
+        if (std::abs(theta) < 0.003 || std::abs(theta) > 0.03) continue;
+        const double y = r.load_factor - lambda_c;
+        s11 += theta * theta, s12 += theta * theta * theta, s22 += theta * theta * theta * theta;
+        r1 += y * theta, r2 += y * theta * theta;
+        ++used;
+    }
+    REQUIRE(used >= 5);
+    return (r1 * s22 - r2 * s12) / (s11 * s22 - s12 * s12);
+}
+
+std::string shipped_roorda(int elements) {
+    std::ifstream in(std::string(PLASTICA_SOURCE_DIR) + "/models/gallery/roorda_frame.toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    for (std::size_t at = s.find("elements = 20"); at != std::string::npos; at = s.find("elements = 20", at + 1))
+        s.replace(at, 13, "elements = " + std::to_string(elements));
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("Roorda's perfect frame switched to its buckled branch rises along Koiter's straight asymmetric branch", "[buckling]") {
+    // An asymmetric bifurcation's branch leaves it along a straight line, λ − λ_c ∝ θ (Koiter;
+    // Thompson & Hunt, A General Theory of Elastic Stability, 1973, ch. 4): the fitted quadratic
+    // term bends it by less than a tenth over |θ| ≤ 0.03. The switch takes the rising side. Its
+    // slope converges with the mesh: 20 and 40 elements a member agree within 1 %; per unit P_c
+    // it is 0.386 a radian.
+    const Path p20 = follow(shipped_roorda(20));
+    const Path p40 = follow(shipped_roorda(40));
+    for (const Path* p : {&p20, &p40}) {
+        REQUIRE(p->summary.critical_points.size() >= 1);
+        CHECK(p->summary.critical_points.front().kind == CriticalKind::bifurcation);
+        CHECK(p->summary.critical_points.front().followed);
+        CHECK(p->summary.status == RunStatus::completed);
+    }
+    // The located bifurcation: the path's own tangent on 20 elements a member, 0.23 % above
+    // 13.8859 (the chord's geometric stiffness; 0.06 % on 40).
+    const double c20 = p20.summary.critical_points.front().load_factor, c40 = p40.summary.critical_points.front().load_factor;
+    CHECK(std::abs(c20 / 13.8859 - 1.0) < 5e-3);
+    CHECK(std::abs(c40 / 13.8859 - 1.0) < std::abs(c20 / 13.8859 - 1.0));
+    const int joint20 = 20, joint40 = 40; // the column's top
+    const double s20 = branch_slope(p20, joint20, c20), s40 = branch_slope(p40, joint40, c40);
+    INFO("dλ/dθ: " << s20 << " (20 elements), " << s40 << " (40)");
+    // Rising: the load grows as the joint turns the way the branch went.
+    for (const StepResult& r : p20.steps)
+        if (std::abs(r.displacement[3 * joint20 + 2]) > 0.01) CHECK(r.load_factor > c20);
+    CHECK(std::abs(s20 / s40 - 1.0) < 0.01);
+}
+
+TEST_CASE("A shallow arch's limit point is landed on within 0.1 % under adaptive increments", "[buckling]") {
+    // A pinned circular arch of 20° (R = 100, EI = 1e6, 20 elements) pressed at its crown: an
+    // asymmetric bifurcation, then its symmetric limit point. The reference is the same arch by
+    // fixed arc lengths 25 times shorter; the adaptive run's located limit, and the largest load
+    // it samples before it, lie within 1e-3 of it (measured: 1e-6).
+    const auto arch = [](const char* increment, const char* adaptive) {
+        return std::string(R"(
+[scene]
+name = "arch"
+[[material]]
+name = "m"
+E = 1.0e6
+[[section]]
+name = "s"
+material = "m"
+A = 100.0
+I = 1.0
+[[arc]]
+center = [0.0, 0.0]
+radius = 100.0
+start_angle = 80.0
+end_angle = 100.0
+elements = 20
+section = "s"
+[[support]]
+at = [17.364817766693, 98.480775301221]
+fix = ["ux", "uy"]
+[[support]]
+at = [-17.364817766693, 98.480775301221]
+fix = ["ux", "uy"]
+[[load]]
+at = [0.0, 100.0]
+fy = -1.0
+[analysis]
+scheme = "arc_length"
+control_at = [0.0, 100.0]
+control_sign = -1.0
+target_displacement = 1.0
+max_steps = 2000
+increment = )") + increment + "\nadaptive = " + adaptive + "\n";
+    };
+    const auto first_limit = [](const Path& p) -> const CriticalPoint* {
+        for (const CriticalPoint& c : p.summary.critical_points)
+            if (c.kind == CriticalKind::limit) return &c;
+        return nullptr;
+    };
+    const Path fine = follow(arch("0.02", "false")), coarse = follow(arch("0.5", "true"));
+    const CriticalPoint* reference = first_limit(fine);
+    const CriticalPoint* found = first_limit(coarse);
+    REQUIRE(reference);
+    REQUIRE(found);
+    double sampled = 0.0;
+    for (const StepResult& r : coarse.steps)
+        if (r.step < found->step) sampled = std::max(sampled, r.load_factor);
+    INFO("limit " << found->load_factor << ", sampled " << sampled << ", reference " << reference->load_factor);
+    CHECK(std::abs(found->load_factor / reference->load_factor - 1.0) < 1e-3);
+    CHECK(std::abs(sampled / reference->load_factor - 1.0) < 1e-3);
+    CHECK(coarse.steps.size() < fine.steps.size() / 5);
+    // Before it, the asymmetric bifurcation: located, not followed.
+    REQUIRE(!coarse.summary.critical_points.empty());
+    CHECK(coarse.summary.critical_points.front().kind == CriticalKind::bifurcation);
 }

@@ -203,7 +203,7 @@ TEST_CASE("plastica schema --scene prints the key tables models/README.md carrie
         CHECK_THAT(readme.str(), Catch::Contains(block));
         ++blocks;
     }
-    CHECK(blocks == 22u);
+    CHECK(blocks == 23u);
     CHECK_THAT(r.output, Catch::Contains("| `E` | number > 0, a stress, force/length² | required | Young's modulus |"));
 }
 

@@ -19,7 +19,8 @@ void scale_to_unit_translation(std::vector<double>& shape) {
     for (double& v : shape) v *= sign / largest;
 }
 
-BucklingResult linear_buckling(const StructuralSystem& system, const Eigen::VectorXd& ubar, double load_factor, int count) {
+BucklingResult linear_buckling(const StructuralSystem& system, const Eigen::VectorXd& ubar, double load_factor, int count,
+                               bool cubic) {
     const SparseMatrix& K = system.tangent();
     LinearSolver solver;
     if (!solver.factorize(K)) throw BucklingError("the tangent is singular: the structure is a mechanism at this state");
@@ -28,7 +29,7 @@ BucklingResult linear_buckling(const StructuralSystem& system, const Eigen::Vect
     Eigen::VectorXd rate = ubar; // the prescribed DOFs move at their rate
     system.scatter(solver.solve(f), rate);
     const Eigen::VectorXd axial_rates = system.axial_force_rates(rate);
-    const SparseMatrix B = -system.geometric_stiffness(axial_rates);
+    const SparseMatrix B = -system.geometric_stiffness(axial_rates, cubic);
     const BucklingEigenpairs found = lowest_buckling_factors(K, B, count);
     BucklingResult out;
     out.state_load_factor = load_factor;

@@ -31,8 +31,11 @@ struct BucklingResult {
 };
 
 // At the system's last evaluation (the state u, λ; ubar: the prescribed displacements per
-// unit λ, full). Throws BucklingError where no factor can be found.
-BucklingResult linear_buckling(const StructuralSystem& system, const Eigen::VectorXd& ubar, double load_factor, int count);
+// unit λ, full). cubic: the members' Hermitian geometric stiffness (the textbook's, 3e-5 above
+// Euler on 8 elements), else the chord's of the path's own tangent (where the path's pivots
+// change sign). Throws BucklingError where no factor can be found.
+BucklingResult linear_buckling(const StructuralSystem& system, const Eigen::VectorXd& ubar, double load_factor, int count,
+                               bool cubic = true);
 
 // A shape scaled so that its largest nodal translation is 1, sign kept (rotations follow).
 void scale_to_unit_translation(std::vector<double>& shape);

@@ -151,11 +151,11 @@ Eigen::VectorXd MemberSet::axial_force_rates(const Eigen::VectorXd& rate) const 
     return out;
 }
 
-SparseMatrix MemberSet::geometric_stiffness(const Eigen::VectorXd& axial_forces, int free_count) const {
+SparseMatrix MemberSet::geometric_stiffness(const Eigen::VectorXd& axial_forces, int free_count, bool cubic) const {
     std::vector<Eigen::Triplet<double>> entries;
     Matrix6 k;
     for (std::size_t e = 0; e < elements_.size(); ++e) {
-        elements_[e].geometric_stiffness(axial_forces[static_cast<Eigen::Index>(e)], k);
+        elements_[e].geometric_stiffness(axial_forces[static_cast<Eigen::Index>(e)], k, cubic);
         // Follower pressure's load stiffness grows with its factor: its rate per unit factor.
         if (!pressure_.empty() && pressure_.loads(e)) k += pressure_.stiffness(e, 1.0) - pressure_.stiffness(e, 0.0);
         const std::array<int, 6> at = dofs(e);

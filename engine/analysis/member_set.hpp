@@ -42,7 +42,7 @@ public:
     // given axial forces (the members' Hermitian one) with follower pressure's load stiffness
     // per unit of its factor, on the free DOFs.
     Eigen::VectorXd axial_force_rates(const Eigen::VectorXd& displacement_rate) const;
-    SparseMatrix geometric_stiffness(const Eigen::VectorXd& axial_forces, int free_count) const;
+    SparseMatrix geometric_stiffness(const Eigen::VectorXd& axial_forces, int free_count, bool cubic) const;
     bool hinge_states_consistent() const;
     bool all_elastic() const;
     double trial_yield_advance() const;

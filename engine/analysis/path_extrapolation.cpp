@@ -1,5 +1,8 @@
 #include "analysis/path_extrapolation.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace plastica {
 
 void PathExtrapolation::add(double parameter, const Eigen::VectorXd& displacement, double load_factor,
@@ -33,6 +36,24 @@ PathPoint PathExtrapolation::at(double s) const {
     p.load_factor = w[0] * points_[0].load_factor + w[1] * points_[1].load_factor + w[2] * points_[2].load_factor;
     p.axial_forces = w[0] * points_[0].axial_forces + w[1] * points_[1].axial_forces + w[2] * points_[2].axial_forces;
     return p;
+}
+
+std::optional<double> PathExtrapolation::peak_with(double s2, double l2, double* at) const {
+    if (count_ < 2) return std::nullopt;
+    const double s0 = points_[1].parameter, l0 = points_[1].load_factor;
+    const double s1 = points_[2].parameter, l1 = points_[2].load_factor;
+    if (s0 == s1 || s1 == s2 || s0 == s2) return std::nullopt;
+    // Newton's form λ(s) = l0 + d01 (s − s0) + c (s − s0)(s − s1); λ' vanishes at the vertex.
+    const double d01 = (l1 - l0) / (s1 - s0), d12 = (l2 - l1) / (s2 - s1);
+    const double c = (d12 - d01) / (s2 - s0);
+    if (c == 0.0) return std::nullopt;
+    const double vertex = 0.5 * (s0 + s1) - d01 / (2.0 * c);
+    const double lo = std::min(s0, s2), hi = std::max(s0, s2);
+    if (vertex < lo || vertex > hi) return std::nullopt;
+    const double peak = l0 + d01 * (vertex - s0) + c * (vertex - s0) * (vertex - s1);
+    if (std::abs(peak) < std::max(std::abs(l0), std::abs(l2))) return std::nullopt; // a minimum of |λ|
+    if (at) *at = vertex;
+    return peak;
 }
 
 } // namespace plastica

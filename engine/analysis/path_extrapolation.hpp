@@ -24,6 +24,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <optional>
 
 namespace plastica {
 
@@ -45,6 +46,11 @@ public:
     bool traced_a_step() const { return count_ >= 2; }
     // The state at `parameter`; only when ready().
     PathPoint at(double parameter) const;
+    // The largest |λ| of the quadratic through the last two points and a new one (parameter,
+    // load factor), where its vertex lies between the first and the new point: a limit point
+    // between samples. Empty with fewer than two points or no such vertex.
+    // vertex: where it lies, in the path parameter.
+    std::optional<double> peak_with(double parameter, double load_factor, double* vertex = nullptr) const;
 
 private:
     std::array<PathPoint, 3> points_; // oldest first

@@ -101,6 +101,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     };
     auto finish = [&](int steps) {
         summary.steps = steps;
+        if (summary.status == RunStatus::step_limit) summary.reason += unstable_ending(summary);
         if (stepper_) {
             summary.time = stepper_->time();
             summary.rayleigh_alpha_m = stepper_->alpha_m();
@@ -184,9 +185,58 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             h = smaller;
             continue;
         }
-        commit_step(outcome, summary);
+        // Critical points of elastic structures are passed one at a time, each located
+        // (path_critical.cpp); a yielding structure's pivots turn with its hinges and fibres.
+        const bool tracks_critical_points = model_.tracks_critical_points();
+        if (tracks_critical_points && cut_for_pivots(step_h)) {
+            roll_back(u_saved, lambda_saved);
+            ++summary.cut_steps;
+            h = 0.5 * step_h;
+            continue;
+        }
+        std::optional<CriticalPoint> critical;
+        if (tracks_critical_points && solver_.negative_pivots() > committed_pivots_) {
+            std::optional<double> land_at;
+            critical = locate_critical_point(u_saved, lambda_saved, land_at);
+            if (land_at) { // taken again shorter, to end at it
+                roll_back(u_saved, lambda_saved);
+                ++landings_;
+                if (critical->kind == CriticalKind::bifurcation && constraint_->scheme() != Scheme::arc_length)
+                    // Short of it by half the band: at the bifurcation itself the tangent is
+                    // singular, and round-off along the mode would turn the path onto the branch.
+                    landing_load_factor_ = critical->load_factor - (critical->load_factor > lambda_saved ? 0.5 : -0.5) *
+                                                                        landing_band * std::abs(critical->load_factor);
+                else
+                    h = *land_at * step_h;
+                continue;
+            }
+            landings_ = 0;
+        }
+        pivot_cuts_in_step_ = 0;
+        NewtonResult taken = outcome;
+        if (critical && critical->kind == CriticalKind::bifurcation && stage.bifurcation == BifurcationRule::switch_branch &&
+            !branch_switched_ && !critical->mode.empty()) {
+            // One try: a branch that cannot be reached leaves the path on the fundamental one.
+            branch_switched_ = true;
+            const Eigen::VectorXd u_past = u_;
+            const double lambda_past = lambda_;
+            roll_back(u_saved, lambda_saved);
+            taken = switch_branch(*critical, u_saved, lambda_saved, u_past, lambda_past, control, summary);
+            if (!taken.converged()) {
+                roll_back(u_saved, lambda_saved);
+                h = step_h;
+                continue;
+            }
+            critical->followed = true;
+            path_.clear(); // the fundamental path's points extrapolate nothing on the branch
+        }
+        commit_step(taken, summary);
         const std::string crossing = check_penetration();
-        const StepResult& result = make_result(step_, outcome.iterations, outcome.rule, control.report_sections);
+        StepResult& result = make_result(step_, taken.iterations, taken.rule, control.report_sections);
+        result.critical = critical;
+        if (critical) summary.critical_points.push_back(*critical);
+        committed_pivots_ = result.negative_pivots;
+        committed_lambda_ = lambda_;
         if (result.negative_pivots > 0) {
             if (summary.negative_pivot_steps++ == 0) summary.first_negative_pivot_step = step_;
         }
@@ -204,6 +254,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             }
             std::string reason = stage.target_load_factor ? "target load factor reached" : "target displacement reached";
             if (stages_.number() > 1) reason += " (" + std::to_string(stages_.number()) + " stages)";
+            reason += unstable_ending(summary);
             stop({RunStatus::completed, reason});
             break;
         }

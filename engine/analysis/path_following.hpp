@@ -18,6 +18,7 @@
 #include "model/model.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/newton_solver.hpp"
+#include "solver/tangent_spectrum.hpp"
 
 #include <atomic>
 #include <functional>
@@ -91,8 +92,12 @@ private:
     // target); extrapolate: start from the path's quadratic extrapolation when there is one.
     // Starts from the path extrapolated to `extrapolate_to` (a value of the run's path parameter;
     // default: h further) when asked and the path allows it.
+    // branch: an increment started at this guess (free DOFs) and held on the sphere of its
+    // length about the start, the root nearest it (a switch to a buckled branch), with branch_load
+    // the guess's load factor change.
     NewtonResult attempt_increment(double h, const RunControl& control, bool extrapolate, const PathConstraint& constraint,
-                                   std::optional<double> extrapolate_to = std::nullopt);
+                                   std::optional<double> extrapolate_to = std::nullopt,
+                                   const Eigen::VectorXd* branch = nullptr, double branch_load = 0.0);
     // After a failed attempt of size step_h: back to the saved state, h the increment to try
     // next; the stop, where no smaller increment is left to try or none can help.
     std::optional<StopReason> after_failure(const NewtonResult& outcome, double step_h, const Eigen::VectorXd& u_saved,
@@ -114,6 +119,33 @@ private:
     // One transient step of dt, cut in halves (up to ten times) until it converges; the time
     // step it took, or 0 where none converged.
     double advance_in_time(double dt, const RunControl& control, RunSummary& summary, NewtonResult& outcome);
+    // Critical points (analysis/path_critical.cpp). A converged step that turns more than one
+    // pivot negative is cut (at most ten times) so that they are met one at a time.
+    bool cut_for_pivots(double step_h);
+    // The tangent at another state (u, λ), the system left as it was.
+    SparseMatrix tangent_at(const Eigen::VectorXd& u, double lambda);
+    // The critical point a converged step passed (one more negative pivot than the state it
+    // started from, saved in u_saved, λ_saved): located about that state, and classified.
+    // land_at: where a coarse step should have ended to land on it, as a share of the step
+    // (the step is then taken again that long, up to four times a critical point).
+    CriticalPoint locate_critical_point(const Eigen::VectorXd& u_saved, double lambda_saved, std::optional<double>& land_at);
+    int landings_ = 0; // steps taken again shorter to land on the critical point ahead
+    static constexpr double landing_band = 1e-3;
+    // A bifurcation ahead on a rising load: the next step is taken under load control to it.
+    std::optional<double> landing_load_factor_;
+    // [analysis] bifurcation = "switch": from the state the step started at (saved), a step
+    // to the buckled branch through the located bifurcation, started along its mode on the side
+    // where the load rises. The step's outcome, converged or not (then the path goes on along
+    // the fundamental one).
+    NewtonResult switch_branch(const CriticalPoint& at, const Eigen::VectorXd& u_saved, double lambda_saved,
+                               const Eigen::VectorXd& u_past, double lambda_past, const RunControl& control,
+                               RunSummary& summary);
+    bool branch_switched_ = false; // once per run
+    // "; past a bifurcation at λ = … (unstable)" where the run ends beyond one it did not follow.
+    std::string unstable_ending(RunSummary& summary) const;
+    int committed_pivots_ = 0; // the negative pivots of the last published step's tangent
+    double committed_lambda_ = 0.0; // the load factor of the last published step
+    int pivot_cuts_in_step_ = 0;
     std::unique_ptr<TimeStepper> stepper_; // for a scene with a transient stage
     // Where the current state lies: its load factor, controlled displacement and arc length,
     // and its place along the path in the current constraint's parameter.
@@ -142,7 +174,7 @@ private:
     void drive_pattern(int pattern);
     // The converged state as a step's result, in storage kept from step to step (the
     // observers copy what they keep). with_sections: RunControl::report_sections of the run.
-    const StepResult& make_result(int step, int iterations, Acceptance rule, bool with_sections);
+    StepResult& make_result(int step, int iterations, Acceptance rule, bool with_sections);
 
     Model model_;
     StageSequence stages_;

@@ -2,6 +2,7 @@
 // tangent's, under the stage's constraint or the one that lands on its target.
 #include "analysis/path_following.hpp"
 
+#include "analysis/increment_constraints.hpp"
 #include "analysis/mechanisms.hpp"
 #include "analysis/penetration_check.hpp"
 #include "analysis/plastic_sites.hpp"
@@ -14,7 +15,8 @@
 namespace plastica {
 
 NewtonResult PathFollowing::attempt_increment(double h, const RunControl& control, bool extrapolate,
-                                              const PathConstraint& constraint, std::optional<double> extrapolate_to) {
+                                              const PathConstraint& constraint, std::optional<double> extrapolate_to,
+                                              const Eigen::VectorXd* branch, double branch_load) {
     const AnalysisSpec& a = stages_.current();
     StructureProblem problem(system_, u_, lambda_, ubar_, ubar_held_, control.freeze_active_after,
                              control.freeze_hinges_after, control.freeze_fibres_after);
@@ -62,10 +64,18 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     context.control_sign = a.control.sign;
     context.previous = &previous_increment_;
     context.nearest_when_no_root = failures_in_step_ >= 3 || steps_missing_arc_ >= 3;
-    const std::unique_ptr<IncrementConstraint> corrector = constraint.corrector(h, context);
+    std::unique_ptr<IncrementConstraint> corrector;
+    if (branch) {
+        guess.dx = *branch;
+        guess.dlambda = branch_load;
+        start = &guess;
+        corrector = std::make_unique<ArcLength>(branch->norm(), *branch);
+    } else {
+        corrector = constraint.corrector(h, context);
+    }
     NewtonResult result = solve_increment(problem, *corrector, settings, solver_, hook, start);
     // Refused, the increment counts as a failure and the step is cut.
-    if (result.converged() && path_.traced_a_step() && constraint.turned_back(result.increment, previous_increment_)) {
+    if (!branch && result.converged() && path_.traced_a_step() && constraint.turned_back(result.increment, previous_increment_)) {
         result.rule = Acceptance::none;
         result.failure = NewtonFailure::turned_back;
     }
@@ -75,6 +85,15 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
 
 NewtonResult PathFollowing::attempt_step(double h, const RunControl& control, const Eigen::VectorXd& u_saved,
                                          double lambda_saved, RunSummary& summary) {
+    // Landing on a bifurcation located ahead (path_critical.cpp): the load rises to it.
+    if (landing_load_factor_) {
+        const double to = *landing_load_factor_;
+        landing_load_factor_.reset();
+        NewtonResult landed = attempt_increment(to - lambda_saved, control, false, *make_path_constraint(Scheme::load_control));
+        if (landed.converged()) return landed;
+        summary.iterations += landed.iterations;
+        roll_back(u_saved, lambda_saved);
+    }
     NewtonResult outcome = attempt_increment(h, control, true, *constraint_);
     if (!outcome.converged() && extrapolating()) {
         // The extrapolation may overshoot a kink of the path (a hinge or contact that appears

@@ -34,7 +34,7 @@ void PathFollowing::drive_pattern(int pattern) {
     initial_flexibility_ = load_flexibility();
 }
 
-const StepResult& PathFollowing::make_result(int step, int iterations, Acceptance rule, bool with_sections) {
+StepResult& PathFollowing::make_result(int step, int iterations, Acceptance rule, bool with_sections) {
     StepResult& r = result_;
     r.step = step;
     r.load_factor = lambda_;
@@ -48,6 +48,7 @@ const StepResult& PathFollowing::make_result(int step, int iterations, Acceptanc
     r.accepted_by = rule;
     r.negative_pivots = solver_.negative_pivots();
     r.residual = last_residual_;
+    r.critical.reset();
     // A scene in time reports every step's time; a static step's motion is none.
     if (stepper_) {
         r.time = stepper_->time();

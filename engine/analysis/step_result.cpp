@@ -18,3 +18,11 @@ const char* to_string(RunStatus status) {
 }
 
 } // namespace plastica
+
+namespace plastica {
+
+const char* to_string(CriticalKind kind) {
+    return kind == CriticalKind::bifurcation ? "bifurcation" : "limit_point";
+}
+
+} // namespace plastica

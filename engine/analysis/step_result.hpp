@@ -7,6 +7,7 @@
 #include "solver/newton_solver.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,24 @@ struct EnergyTerms {
     double error = 0.0; // |kinetic + strain + plastic + damping + contact − external − ground − initial| over the largest term
 };
 
+// A point of the path where the tangent loses its positive definiteness (one more negative
+// pivot): a bifurcation, where the critical mode is orthogonal to the load (φ·f ≈ 0) and the
+// path may branch, or a limit point, where it is not and the load passes a maximum. Located by
+// the tangent eigenvalue problem about the last stable state (analysis/linear_buckling.hpp).
+enum class CriticalKind { bifurcation, limit };
+
+struct CriticalPoint {
+    CriticalKind kind = CriticalKind::bifurcation;
+    int step = 0;              // the first step past it
+    double load_factor = 0.0;  // where the lowest eigenvalue of the tangent passes zero
+    double load = 0.0;         // the same as the reported load
+    double load_alignment = 0.0; // |φ·f| / (‖φ‖ ‖f‖) over the free DOFs
+    std::vector<double> mode;  // full DOF vector, its largest nodal translation 1
+    bool followed = false;     // the path switched to the branch along the mode
+};
+
+const char* to_string(CriticalKind kind);
+
 struct StepResult {
     int step = 0;                   // 0 is the unloaded state
     double load_factor = 0.0;       // λ, the factor of the pattern the step's stage drives
@@ -75,6 +94,8 @@ struct StepResult {
     double time = 0.0;
     std::vector<double> velocity, acceleration;
     EnergyTerms energy;
+    // The critical point passed in this step, if any.
+    std::optional<CriticalPoint> critical;
 };
 
 // output_failed: an observer could not take a step (a full disk); the steps before it stand.
@@ -104,6 +125,10 @@ struct RunSummary {
     int largest_tolerance_step = 0;
     int negative_pivot_steps = 0;
     int first_negative_pivot_step = -1;
+    // Every critical point the path passed, in order (the modes included).
+    std::vector<CriticalPoint> critical_points;
+    // The run ended on a branch that is not stable: past a bifurcation it did not follow.
+    bool ends_unstable = false;
     double seconds = 0.0;
 };
 

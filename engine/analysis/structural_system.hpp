@@ -73,12 +73,13 @@ public:
     Eigen::VectorXd axial_forces() const;
     // Linear buckling (linear_buckling.hpp), at the last evaluation: each member's axial force
     // rate along a displacement rate (full DOF vector), and the geometric stiffness of given
-    // axial forces (one per member) with follower pressure's per unit of its factor.
+    // axial forces (one per member) with follower pressure's per unit of its factor; cubic:
+    // the members' Hermitian one, else the chord's the tangent carries (corotational_beam.hpp).
     Eigen::VectorXd axial_force_rates(const Eigen::VectorXd& displacement_rate) const {
         return members_->axial_force_rates(displacement_rate);
     }
-    SparseMatrix geometric_stiffness(const Eigen::VectorXd& axial_forces) const {
-        return members_->geometric_stiffness(axial_forces, free_count_);
+    SparseMatrix geometric_stiffness(const Eigen::VectorXd& axial_forces, bool cubic) const {
+        return members_->geometric_stiffness(axial_forces, free_count_, cubic);
     }
     // Whether that tangent is finite; if not, non_finite_where() names the element.
     bool tangent_finite() const;

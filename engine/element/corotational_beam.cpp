@@ -133,11 +133,12 @@ double CorotationalBeam::axial_force_rate(const Vector6& rate) const {
     return kb(0, 0) * B.stretch.dot(rate) + kb(0, 1) * B.rotation_i.dot(rate) + kb(0, 2) * B.rotation_j.dot(rate);
 }
 
-void CorotationalBeam::geometric_stiffness(double N, Matrix6& k) const {
+void CorotationalBeam::geometric_stiffness(double N, Matrix6& k, bool cubic) const {
     const double L = length_trial_;
     const ChordVectors chord(c_trial_, s_trial_);
     const Eigen::Map<const Vector6> z(chord.z);
     k.noalias() = (N / L) * z * z.transpose();
+    if (!cubic) return;
     const BasicRows B(c_trial_, s_trial_, L);
     const std::array<bool, 2> released = law_->released_ends();
     if (released[0] && released[1]) return;

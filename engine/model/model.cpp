@@ -140,4 +140,22 @@ double Model::load_per_factor() const {
     return report.load_scale * std::abs(total);
 }
 
+bool Model::tracks_critical_points() const {
+    if (has_plasticity(Plasticity::hinges) || has_plasticity(Plasticity::distributed)) return false;
+    if (analysis.scheme != Scheme::transient) return true;
+    for (const StageSpec& s : stages)
+        if (s.scheme != Scheme::transient) return true;
+    return false;
+}
+
+double Model::size() const {
+    if (nodes.empty()) return 0.0;
+    double x0 = nodes.front().x, x1 = x0, y0 = nodes.front().y, y1 = y0;
+    for (const Node& n : nodes) {
+        x0 = std::min(x0, n.x), x1 = std::max(x1, n.x);
+        y0 = std::min(y0, n.y), y1 = std::max(y1, n.y);
+    }
+    return std::max(x1 - x0, y1 - y0);
+}
+
 } // namespace plastica

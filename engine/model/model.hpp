@@ -175,8 +175,23 @@ struct DofRef {
     }
 };
 
+// What the path does at a bifurcation: say so and go on along the fundamental path, or go on
+// along the buckled branch (analysis/path_critical.cpp).
+enum class BifurcationRule { report, switch_branch };
+
+// An imperfection in the shape of a buckling mode of a pattern's loads ([[imperfection]]):
+// the perfect geometry plus `amplitude` times the mode scaled to a largest nodal translation of 1
+// (analysis/imperfections.hpp).
+struct ImperfectionSpec {
+    int mode = 1;
+    double amplitude = 0.0; // a length, signed
+    int pattern = 0;
+    double load_factor = 0.0; // the mode's critical factor on the perfect geometry (set when applied)
+};
+
 struct AnalysisSpec {
     Scheme scheme = Scheme::arc_length;
+    BifurcationRule bifurcation = BifurcationRule::report;
     double initial_increment = 0.01; // Δλ, Δu of the control DOF, or arc length Δl
     double min_increment = 1e-8;
     double max_increment = 0.0;      // 0: no cap
@@ -247,12 +262,19 @@ struct Model {
     std::vector<std::string> patterns{"main"}; // load pattern names, "main" first
     AnalysisSpec analysis;
     std::vector<StageSpec> stages; // after the first ([analysis]), in order
+    std::vector<ImperfectionSpec> imperfections; // applied to the nodes when the scene is read
     DynamicsSpec dynamics;
     ReportSpec report;
 
     // Whether some stage integrates in time.
     bool transient() const;
+    // The path following locates bifurcations and limit points (analysis/path_critical.cpp):
+    // every member elastic (a yielding one's pivots turn with its hinges and fibres), and some
+    // stage follows a path.
+    bool tracks_critical_points() const;
     int dof_count() const { return dofs_per_node * static_cast<int>(nodes.size()); }
+    // The larger side of the nodes' bounding box (0 for fewer than two distinct points).
+    double size() const;
     bool inelastic() const;
     bool has_plasticity(Plasticity kind) const; // some element's section models it this way
     int integration_points() const;             // most sections along a distributed-plasticity element

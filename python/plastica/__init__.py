@@ -81,13 +81,13 @@ def to_toml(scene):
 
 def _columns(rows):
     """Columns of CSV rows (the first is the header) as numpy arrays: float where every value is
-    a number, else str."""
+    a number or empty (NaN: critical_load_factor away from a critical point), else str."""
     header, body = rows[0], rows[1:]
     columns = {}
     for j, name in enumerate(header):
         values = [row[j] if j < len(row) else "" for row in body]
         try:
-            columns[name] = np.array([float(v) for v in values], dtype=float)
+            columns[name] = np.array([float(v) if v != "" else np.nan for v in values], dtype=float)
         except ValueError:
             columns[name] = np.array(values, dtype=str)
     return columns
@@ -221,14 +221,27 @@ def modes(scene, count=6, step=0, overrides=None):
     unloaded structure, or at step `step` of its run. A list of dicts, one per mode: mode, period,
     frequency, omega, effective_mass_x/y, share_x/y, and shape (an n_nodes × 3 array: ux, uy, θ
     for unit modal mass)."""
+    return _at_step(_plastica.modes_of_scene, scene, count, step, overrides)
+
+
+def _at_step(find, scene, count, step, overrides):
+    """find(source, is_text, name, overrides, count, step), with a dict scene's errors named by its keys."""
     source, is_text, name = _scene_source(scene)
     pairs = [(str(k), _toml_value(v, str(k))) for k, v in (overrides or {}).items()]
     try:
-        return _plastica.modes_of_scene(source, is_text, name, pairs, int(count), int(step))
+        return find(source, is_text, name, pairs, int(count), int(step))
     except SceneError as error:
         if isinstance(scene, dict):
             raise SceneError(_named_path(str(error), scene)) from None
         raise
+
+
+def buckling(scene, count=6, step=0, overrides=None):
+    """The critical load factors and buckling modes of a scene's loads (a path, TOML text or a
+    dict), as `plastica buckling`: at the unloaded structure, or about step `step` of its run. A
+    list of dicts, one per mode: mode, load_factor, above_state (the factor above the state's),
+    and shape (an n_nodes × 3 array: ux, uy, θ, its largest translation 1)."""
+    return _at_step(_plastica.buckling_of_scene, scene, count, step, overrides)
 
 
 def render(result, folder, size=(1280, 720), options=()):

@@ -24,7 +24,9 @@ def assert_same_columns(a, b):
     assert list(a) == list(b)
     for name in a:
         assert a[name].dtype == b[name].dtype, name
-        assert np.array_equal(a[name], b[name]), name
+        # A column empty away from a critical point holds NaN there, in both.
+        equal_nan = a[name].dtype.kind == "f"
+        assert np.array_equal(a[name], b[name], equal_nan=equal_nan), name
 
 
 @pytest.mark.parametrize("scene", ["models/ring_inelastic.toml", "models/ring_elastic.toml", "models/gallery/portal_frame.toml"])
