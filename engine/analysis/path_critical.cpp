@@ -156,6 +156,10 @@ CriticalPoint PathFollowing::locate_critical_point(const Eigen::VectorXd& u_save
         if (peak && landing_left && s_past != s_saved && nearest_end > 0.1 * landing_band * std::abs(found.load_factor)) {
             const double vertex_share = (vertex - s_saved) / (s_past - s_saved);
             if (vertex_share > 0.02 && vertex_share < 0.98) land_at = vertex_share;
+        } else if (!peak && share && landing_left) {
+            // Too few states for the quadratic (the first step passed it): the step is taken
+            // again to end where the eigenvalue passes zero, and the states then bracket it.
+            land_at = std::clamp(*share, 0.05, 0.95);
         }
     }
     found.load = factors_.at(model_.reported_pattern(), found.load_factor) * model_.load_per_factor();
