@@ -40,18 +40,25 @@ PathPoint PathExtrapolation::at(double s) const {
 
 std::optional<double> PathExtrapolation::peak_with(double s2, double l2, double* at) const {
     if (count_ < 2) return std::nullopt;
-    const double s0 = points_[1].parameter, l0 = points_[1].load_factor;
-    const double s1 = points_[2].parameter, l1 = points_[2].load_factor;
+    const PathPoint& before = points_[static_cast<std::size_t>(count_ - 2)];
+    const PathPoint& last = points_[static_cast<std::size_t>(count_ - 1)];
+    const double s0 = before.parameter, l0 = before.load_factor;
+    const double s1 = last.parameter, l1 = last.load_factor;
     if (s0 == s1 || s1 == s2 || s0 == s2) return std::nullopt;
     // Newton's form λ(s) = l0 + d01 (s − s0) + c (s − s0)(s − s1); λ' vanishes at the vertex.
     const double d01 = (l1 - l0) / (s1 - s0), d12 = (l2 - l1) / (s2 - s1);
     const double c = (d12 - d01) / (s2 - s0);
     if (c == 0.0) return std::nullopt;
     const double vertex = 0.5 * (s0 + s1) - d01 / (2.0 * c);
-    const double lo = std::min(s0, s2), hi = std::max(s0, s2);
+    // The pivot turned within the last step: its maximum lies between its ends.
+    const double lo = std::min(s1, s2), hi = std::max(s1, s2);
     if (vertex < lo || vertex > hi) return std::nullopt;
     const double peak = l0 + d01 * (vertex - s0) + c * (vertex - s0) * (vertex - s1);
     if (std::abs(peak) < std::max(std::abs(l0), std::abs(l2))) return std::nullopt; // a minimum of |λ|
+    // A quadratic bent by a far first point (the unloaded state before a first step that went
+    // almost to the peak) overshoots: the peak rises above the step's ends by no more than the
+    // step's own change of λ, or a thousandth of it.
+    if (std::abs(peak) - std::max(std::abs(l1), std::abs(l2)) > std::max(std::abs(l2 - l1), 1e-3 * std::abs(peak))) return std::nullopt;
     if (at) *at = vertex;
     return peak;
 }

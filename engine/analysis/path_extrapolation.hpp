@@ -47,7 +47,7 @@ public:
     // The state at `parameter`; only when ready().
     PathPoint at(double parameter) const;
     // The largest |λ| of the quadratic through the last two points and a new one (parameter,
-    // load factor), where its vertex lies between the first and the new point: a limit point
+    // load factor), where its vertex lies between the last point and the new one: a limit point
     // between samples. Empty with fewer than two points or no such vertex.
     // vertex: where it lies, in the path parameter.
     std::optional<double> peak_with(double parameter, double load_factor, double* vertex = nullptr) const;
