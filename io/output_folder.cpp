@@ -12,11 +12,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 namespace plastica {
 
@@ -112,7 +114,13 @@ OutputFolder::OutputFolder(std::string path, OutputFolderOptions options) : path
     lock_fd_ = ::openat(folder_fd_, lock_file_name, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (lock_fd_ < 0 || ::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
         const int error = errno;
-        const std::string holder = lock_fd_ >= 0 ? lock_holder(lock_fd_) : std::string();
+        std::string holder = lock_fd_ >= 0 ? lock_holder(lock_fd_) : std::string();
+        // The holder writes its name just after it locks (and empties the file first): a refusal
+        // in between waits for it, up to a tenth of a second.
+        for (int wait = 0; lock_fd_ >= 0 && error == EWOULDBLOCK && holder == "another writer" && wait < 50; ++wait) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            holder = lock_holder(lock_fd_);
+        }
         release();
         if (error == EWOULDBLOCK)
             throw OutputFolderError("output folder " + path_ + " is in use by " + holder +
