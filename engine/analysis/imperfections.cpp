@@ -14,7 +14,9 @@ void add_imperfections(Model& model) {
     std::map<int, int> modes_of_pattern;
     for (const ImperfectionSpec& i : model.imperfections) modes_of_pattern[i.pattern] = std::max(modes_of_pattern[i.pattern], i.mode);
     std::map<int, BucklingResult> modes;
-    for (const auto& [pattern, count] : modes_of_pattern) {
+    for (const auto& entry : modes_of_pattern) {
+        // Named, not a structured binding: the lambda below captures it (C++17).
+        const int pattern = entry.first, count = entry.second;
         Model perfect = model;
         perfect.imperfections.clear();
         perfect.stages.clear();
