@@ -119,6 +119,7 @@ Json describe_model(const Model& m) {
     const AnalysisSpec& a = m.analysis;
     j["analysis"] = {{"scheme", scheme_name(a.scheme)},
                      {"pattern", m.patterns.at(static_cast<std::size_t>(a.pattern))},
+                     {"geometry", a.geometry == Geometry::first_order ? "first_order" : "large_displacement"},
                      {"increment", a.initial_increment},
                      {"adaptive", a.adaptive},
                      {"target", target(a.target_load_factor, a.target_displacement)},

@@ -129,6 +129,7 @@ void SceneBuilder::read_analysis(TomlTableReader& top) {
              : scheme == "load_control" ? Scheme::load_control
              : scheme == "transient" ? Scheme::transient : Scheme::displacement_control;
     model_.dynamics.mass = r.choice("mass") == "lumped" ? MassKind::lumped : MassKind::consistent;
+    a.geometry = r.choice("geometry") == "first_order" ? Geometry::first_order : Geometry::large_displacement;
     if (a.scheme == Scheme::transient) {
         read_transient_analysis(r);
         return;

@@ -355,7 +355,7 @@ TableSpec distributed_load_table_spec() {
             .about("force per unit deformed length along the member's left normal, following the members as they deform "
                    "(hydrostatic pressure, a fluid or soil load on a pipe); on a counter-clockwise `[[arc]]` a positive value "
                    "pushes toward the centre. Its load stiffness is in the tangent, so a ring under external pressure buckles at "
-                   "3EI/R³ (a fixed-direction load would give 4EI/R³)"),
+                   "3EI/R³ (a fixed-direction load would give 4EI/R³). At `geometry = \"first_order\"` it acts on the initial chords"),
         pattern_key("the load pattern the loads belong to"),
     }};
 }
@@ -476,6 +476,10 @@ TableSpec analysis_table_spec() {
             .about("at a bifurcation (one more negative pivot with the critical mode orthogonal to the load), `report` "
                    "locates it, warns and goes on along the fundamental path; `switch` goes on along the buckled branch, its "
                    "first step started along the mode (docs/stability.md)"),
+        one_of("geometry", {"large_displacement", "first_order"}).fallback(std::string("large_displacement"))
+            .about("the members' kinematics: `large_displacement` (co-rotational: any displacement and rotation) or "
+                   "`first_order` (small displacements: equilibrium on the initial geometry, no P-Δ, pressure on the initial "
+                   "chords; plasticity and contact as usual), the analysis of design by hand (docs/stability.md)"),
         flag("allow_crossing", false)
             .about("without `[[self_contact]]`, a structure passing through itself, through its symmetry line (`mirror_x`) or "
                    "below the base at a node the base does not hold stops the run (exit 3); `true` lets it pass (a cantilever "

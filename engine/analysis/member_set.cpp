@@ -47,7 +47,8 @@ MemberSet::MemberSet(const Model& model, const std::vector<int>& equation, const
         const SectionSpec& section = model.sections[e.section];
         distributed_.push_back(section.plasticity == Plasticity::distributed);
         elastic_ea_.push_back(section.plasticity == Plasticity::none ? section.E * section.area : 0.0);
-        elements_.emplace_back(a, b, make_law(e, section, std::hypot(b.x - a.x, b.y - a.y), ends_served[i]));
+        elements_.emplace_back(a, b, make_law(e, section, std::hypot(b.x - a.x, b.y - a.y), ends_served[i]),
+                               model.analysis.geometry == Geometry::first_order);
         std::vector<int> held;
         for (int local = 0; local < 6; ++local)
             if (equation_[dofs_per_node * (local < 3 ? e.node_i : e.node_j) + local % 3] < 0) held.push_back(local);
@@ -186,7 +187,7 @@ void MemberSet::element_stiffness(std::size_t e, Matrix6& k) const {
         elements_[e].tangent(k, path_force);
     else
         elements_[e].tangent(k);
-    if (!pressure_.empty() && pressure_.loads(e)) k += pressure_.stiffness(e, evaluated_load_factor_);
+    if (pressure_.follows_deformation() && pressure_.loads(e)) k += pressure_.stiffness(e, evaluated_load_factor_);
 }
 
 bool MemberSet::element_tangent(std::size_t e, Matrix6& k) const {

@@ -103,7 +103,7 @@ public:
     // No member has hinges or fibre sections: every law is smooth.
     bool all_members_elastic() const { return members_->all_elastic(); }
     // The reference load moves with the structure (follower pressure); else it is fixed.
-    bool load_follows_deformation() const { return !pressure_.empty(); }
+    bool load_follows_deformation() const { return pressure_.follows_deformation(); }
     // The largest advance of a section into its yielding range over the trial step, among
     // laws that integrate their stiffness explicitly (BasicLaw::trial_yield_advance).
     double trial_yield_advance() const { return members_->trial_yield_advance(); }

@@ -16,18 +16,35 @@ struct ChordVectors {
     double r[6], z[6];
     ChordVectors(double c, double s) : r{-c, -s, 0.0, c, s, 0.0}, z{s, -c, 0.0, -s, c, 0.0} {}
 };
+
+// The rows of B at a chord of length L along (c, s): the stretch's r, and the end rotations'
+// relative to the chord, b + e₃ and b + e₆ with b = −z/L.
+struct BasicRows {
+    Vector6 stretch, rotation_i, rotation_j;
+    BasicRows(double c, double s, double L) {
+        const ChordVectors chord(c, s);
+        for (int k = 0; k < 6; ++k) {
+            stretch[k] = chord.r[k];
+            rotation_i[k] = rotation_j[k] = -chord.z[k] / L;
+        }
+        rotation_i[2] += 1.0;
+        rotation_j[5] += 1.0;
+    }
+};
 } // namespace
 
-CorotationalBeam::CorotationalBeam(const Node& a, const Node& b, std::unique_ptr<BasicLaw> law)
-    : dx0_(b.x - a.x), dy0_(b.y - a.y), law_(std::move(law)) {
+CorotationalBeam::CorotationalBeam(const Node& a, const Node& b, std::unique_ptr<BasicLaw> law, bool first_order)
+    : dx0_(b.x - a.x), dy0_(b.y - a.y), first_order_(first_order), law_(std::move(law)) {
     L0_ = std::hypot(dx0_, dy0_);
     c0_ = dx0_ / L0_;
     s0_ = dy0_ / L0_;
     length_trial_ = length_committed_ = L0_;
+    c_trial_ = c0_;
+    s_trial_ = s0_;
 }
 
 CorotationalBeam::CorotationalBeam(const CorotationalBeam& o)
-    : dx0_(o.dx0_), dy0_(o.dy0_), L0_(o.L0_), c0_(o.c0_), s0_(o.s0_),
+    : dx0_(o.dx0_), dy0_(o.dy0_), L0_(o.L0_), c0_(o.c0_), s0_(o.s0_), first_order_(o.first_order_),
       law_(o.law_->clone()), alpha_committed_(o.alpha_committed_), alpha_trial_(o.alpha_trial_),
       length_trial_(o.length_trial_), c_trial_(o.c_trial_), s_trial_(o.s_trial_),
       q_trial_(o.q_trial_), q_committed_(o.q_committed_),
@@ -36,6 +53,10 @@ CorotationalBeam::CorotationalBeam(const CorotationalBeam& o)
 void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangent) {
     const double ddx = d[3] - d[0];
     const double ddy = d[4] - d[1];
+    if (first_order_) {
+        compute_first_order(d, ddx, ddy, force, tangent);
+        return;
+    }
     const double dx = dx0_ + ddx;
     const double dy = dy0_ + ddy;
     // Chords are far from hypot's overflow range: the square root of the sum is exact enough.
@@ -73,6 +94,18 @@ void CorotationalBeam::compute(const Vector6& d, Vector6& force, Matrix6* tangen
     if (tangent) this->tangent(*tangent);
 }
 
+void CorotationalBeam::compute_first_order(const Vector6& d, double ddx, double ddy, Vector6& force, Matrix6* tangent) {
+    // The chord's stretch and turn projected on the initial chord: e = B₀ d.
+    const double along = c0_ * ddx + s0_ * ddy, across = c0_ * ddy - s0_ * ddx;
+    alpha_trial_ = across / L0_;
+    const Eigen::Vector3d e(along, d[2] - alpha_trial_, d[5] - alpha_trial_);
+    Eigen::Matrix3d k_basic;
+    law_->trial(e, q_trial_, k_basic);
+    const BasicRows B(c0_, s0_, L0_);
+    force = B.stretch * q_trial_[0] + B.rotation_i * q_trial_[1] + B.rotation_j * q_trial_[2];
+    if (tangent) this->tangent(*tangent);
+}
+
 void CorotationalBeam::tangent(Matrix6& k, double axial_force) const {
     // Bᵀ·k_b·B + z zᵀ N/L + (r zᵀ + z rᵀ)(M_i + M_j)/L², with the rows of B being r, b + e₃ and
     // b + e₆ (b = −z/L). r and z vanish at the rotations and change sign from the first node to
@@ -82,8 +115,9 @@ void CorotationalBeam::tangent(Matrix6& k, double axial_force) const {
     const double c = c_trial_, s = s_trial_;
     Eigen::Matrix3d kb;
     law_->trial_tangent(kb);
-    const double axial = axial_force * inverse_L;
-    const double shear = (q_trial_[1] + q_trial_[2]) * inverse_L * inverse_L;
+    // At first order the equilibrium is on the initial chord: no geometric terms.
+    const double axial = first_order_ ? 0.0 : axial_force * inverse_L;
+    const double shear = first_order_ ? 0.0 : (q_trial_[1] + q_trial_[2]) * inverse_L * inverse_L;
     // Row `row` of K from w, its row of Bᵀ·k_b, and r_i, z_i.
     auto fill = [&](int row, const double w[3], double r, double z) {
         const double alpha = w[0] + shear * z;
@@ -109,22 +143,6 @@ void CorotationalBeam::tangent(Matrix6& k, double axial_force) const {
     fill(5, w5, 0.0, 0.0);
 }
 
-namespace {
-// The rows of B at a chord of length L along (c, s): the stretch's r, and the end rotations'
-// relative to the chord, b + e₃ and b + e₆ with b = −z/L.
-struct BasicRows {
-    Vector6 stretch, rotation_i, rotation_j;
-    BasicRows(double c, double s, double L) {
-        const ChordVectors chord(c, s);
-        for (int k = 0; k < 6; ++k) {
-            stretch[k] = chord.r[k];
-            rotation_i[k] = rotation_j[k] = -chord.z[k] / L;
-        }
-        rotation_i[2] += 1.0;
-        rotation_j[5] += 1.0;
-    }
-};
-} // namespace
 
 double CorotationalBeam::axial_force_rate(const Vector6& rate) const {
     Eigen::Matrix3d kb;

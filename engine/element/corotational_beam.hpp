@@ -4,6 +4,8 @@
 //   K = Bᵀ k_b B + z zᵀ N / L + (r zᵀ + z rᵀ)(M_i + M_j) / L².
 // The rigid rotation is measured by atan2 from the initial chord and unwrapped against the
 // committed value, so a member may turn through any number of full circles.
+// At first order (Geometry::first_order) the chord stays the initial one: the basic deformations
+// are linear in d, the forces act on the initial geometry and the tangent is Bᵀ k_b B alone.
 #pragma once
 
 #include "element/basic_law.hpp"
@@ -27,7 +29,7 @@ struct BeamForces {
 
 class CorotationalBeam {
 public:
-    CorotationalBeam(const Node& a, const Node& b, std::unique_ptr<BasicLaw> law);
+    CorotationalBeam(const Node& a, const Node& b, std::unique_ptr<BasicLaw> law, bool first_order = false);
     CorotationalBeam(const CorotationalBeam& other);
     CorotationalBeam& operator=(const CorotationalBeam&) = delete;
     CorotationalBeam(CorotationalBeam&&) = default;
@@ -63,8 +65,11 @@ public:
     double rigid_rotation() const { return alpha_trial_; }
 
 private:
+    void compute_first_order(const Vector6& d, double ddx, double ddy, Vector6& force, Matrix6* tangent);
+
     double dx0_, dy0_;
     double L0_, c0_, s0_;
+    bool first_order_;
     std::unique_ptr<BasicLaw> law_;
     double alpha_committed_ = 0.0;
     double alpha_trial_ = 0.0;

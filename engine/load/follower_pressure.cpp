@@ -3,7 +3,8 @@
 namespace plastica {
 
 FollowerPressure::FollowerPressure(const Model& model)
-    : reference_(model.pressures), elements_(model.elements), nodes_(model.nodes) {
+    : reference_(model.pressures), follows_(model.analysis.geometry != Geometry::first_order), elements_(model.elements),
+      nodes_(model.nodes) {
     PatternFactors first(model.patterns.size());
     first.driven = model.analysis.pattern;
     set_pattern_factors(first);
@@ -27,8 +28,9 @@ void FollowerPressure::add_forces(const Eigen::VectorXd& u, const std::vector<do
         if (pressure[e] == 0.0) continue;
         const ElementSpec& s = elements_[e];
         const int i = dofs_per_node * s.node_i, j = dofs_per_node * s.node_j;
-        const double cx = nodes_[s.node_j].x + u[j] - nodes_[s.node_i].x - u[i];
-        const double cy = nodes_[s.node_j].y + u[j + 1] - nodes_[s.node_i].y - u[i + 1];
+        const double moved = follows_ ? 1.0 : 0.0;
+        const double cx = nodes_[s.node_j].x - nodes_[s.node_i].x + moved * (u[j] - u[i]);
+        const double cy = nodes_[s.node_j].y - nodes_[s.node_i].y + moved * (u[j + 1] - u[i + 1]);
         // p·L/2 along the unit left normal (−cy, cx)/L: the length cancels.
         const double fx = -0.5 * pressure[e] * cy, fy = 0.5 * pressure[e] * cx;
         force[i] += fx, force[i + 1] += fy;

@@ -20,6 +20,8 @@ public:
     explicit FollowerPressure(const Model& model);
 
     bool empty() const { return loaded_.empty(); }
+    // False at first order (Geometry::first_order): the pressure then acts on the initial chords.
+    bool follows_deformation() const { return follows_ && !empty(); }
     // Nodal forces per unit load factor of the driven pattern at displacements u (full vector,
     // 3 per node).
     void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& force) const { add_forces(u, pressure_, force); }
@@ -37,6 +39,7 @@ private:
     void add_forces(const Eigen::VectorXd& u, const std::vector<double>& pressure, Eigen::VectorXd& force) const;
 
     std::vector<ElementPressure> reference_;
+    bool follows_;
     std::vector<ElementSpec> elements_;
     std::vector<Node> nodes_;
     std::vector<double> pressure_;    // per element, the driven pattern's reference value

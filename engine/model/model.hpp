@@ -179,6 +179,11 @@ struct DofRef {
 // along the buckled branch (analysis/path_critical.cpp).
 enum class BifurcationRule { report, switch_branch };
 
+// The kinematics of the members: co-rotational (large displacements and rotations), or first
+// order (small displacements: equilibrium on the initial geometry, no P-Δ, pressure on the
+// initial chords), which EN 1993-1-1 §5.2's α_cr = F_cr/F_Ed and design by hand are built on.
+enum class Geometry { large_displacement, first_order };
+
 // An imperfection in the shape of a buckling mode of a pattern's loads ([[imperfection]]):
 // the perfect geometry plus `amplitude` times the mode scaled to a largest nodal translation of 1
 // (analysis/imperfections.hpp).
@@ -192,6 +197,7 @@ struct ImperfectionSpec {
 struct AnalysisSpec {
     Scheme scheme = Scheme::arc_length;
     BifurcationRule bifurcation = BifurcationRule::report;
+    Geometry geometry = Geometry::large_displacement;
     double initial_increment = 0.01; // Δλ, Δu of the control DOF, or arc length Δl
     double min_increment = 1e-8;
     double max_increment = 0.0;      // 0: no cap
