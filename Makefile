@@ -9,7 +9,7 @@ CMAKE_ARGS ?=
 # the generator it was first configured with.
 configure = cmake -S . -B $(1) $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 
-.PHONY: run test deps build bench test-sanitize test-slurm fuzz update-snapshots clean
+.PHONY: run test deps build python bench test-sanitize test-slurm fuzz update-snapshots clean
 
 deps:
 	@./scripts/install-deps.sh
@@ -21,6 +21,13 @@ $(BUILD)/CMakeCache.txt: | deps
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 	@cmake --install $(BUILD) --component python > /dev/null && echo "import plastica: installed for /usr/bin/python3"
+
+# The module for another interpreter (a venv, pyenv, conda): make python PYTHON=/path/to/python.
+# pip builds it with python/build_backend (no download) from this build where the ABI matches.
+PYTHON ?=
+python: build
+	@test -n "$(PYTHON)" || { echo "make python PYTHON=/path/to/python: name the interpreter (Debian's python3 has it already)"; exit 2; }
+	PLASTICA_BUILD_DIR=$(abspath $(BUILD)) $(PYTHON) -m pip install --no-build-isolation --force-reinstall --no-deps ./python
 
 # The headline job: the elastic ring, then the inelastic ring with the elastic curve in its chart
 # and its shapes beside. The elastic ring is drawn while the inelastic one is solved and drawn: each

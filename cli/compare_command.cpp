@@ -17,6 +17,27 @@ namespace plastica::cli {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// A CSV field: quoted, its quotes doubled (a picture's name is the folder's to choose).
+std::string csv_field(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string verdict_table(const std::vector<render::ImageVerdict>& verdicts) {
+    std::ostringstream t;
+    t.precision(17);
+    t << "name,passed,differing_fraction,rms,vtk_error,problem\n";
+    for (const render::ImageVerdict& v : verdicts)
+        t << csv_field(v.name) << "," << (v.passed ? 1 : 0) << "," << v.differing_fraction << "," << v.rms << "," << v.vtk_error << ","
+          << csv_field(v.problem) << "\n";
+    return t.str();
+}
+
+} // namespace
+
 int compare_command(const Args& args) {
     render::CompareOptions defaults;
     po::options_description options("Options");
@@ -28,11 +49,12 @@ int compare_command(const Args& args) {
         ("region", po::value<std::string>(), "compare only x0,y0,x1,y1 of each picture (fractions of width and height, y from the top)")
         ("diff", po::value<std::string>(), "folder for <name>_diff.png of the images that fail")
         ("report", po::value<std::string>(), "an HTML page with every failing picture beside its reference and its difference (diff images in --diff, or beside the page)")
+        ("table", po::value<std::string>(), "a CSV of every picture: name, passed, differing_fraction, rms, vtk_error, problem")
         ("quiet,q", "print failures only");
     po::positional_options_description positional;
     positional.add("actual", 1).add("reference", 1);
     po::variables_map vm;
-    if (auto code = parse_options(args, "plastica compare ACTUAL REFERENCE [--threshold T] [--max-fraction F] [--region X0,Y0,X1,Y1] [--diff DIR] [--report FILE]",
+    if (auto code = parse_options(args, "plastica compare ACTUAL REFERENCE [--threshold T] [--max-fraction F] [--region X0,Y0,X1,Y1] [--diff DIR] [--report FILE] [--table FILE]",
                                   options, positional, vm))
         return *code;
     render::CompareOptions o;
@@ -68,6 +90,14 @@ int compare_command(const Args& args) {
         else
             std::snprintf(line, sizeof line, "FAIL %-40s %s", v.name.c_str(), v.problem.c_str());
         std::cout << line << "\n";
+    }
+    if (vm.count("table")) {
+        try {
+            write_file_atomically(vm["table"].as<std::string>(), verdict_table(verdicts));
+        } catch (const std::exception& e) {
+            std::cerr << "plastica: " << e.what() << "\n";
+            return bad_input;
+        }
     }
     std::ostringstream summary;
     summary << (failed ? std::to_string(failed) + " of " + std::to_string(verdicts.size()) + " images differ"

@@ -130,6 +130,18 @@ void draw_charts(const std::string& dir, const std::string& scene_file, bool sam
     }
 }
 
+// The runs of a plan that give key k this value: "runs r0002, r0004" (the first ten, and how many more).
+std::string runs_taking(const SweepPlan& plan, std::size_t k, const std::string& value) {
+    std::vector<std::string> ids;
+    for (std::size_t r = 0; r < plan.ids.size(); ++r)
+        if (plan.values[r][k] == value) ids.push_back(plan.ids[r]);
+    if (ids.empty()) return "no run of the plan (a value a sample's range reaches)";
+    std::string text = ids.size() == 1 ? "run " : "runs ";
+    for (std::size_t i = 0; i < ids.size() && i < 10; ++i) text += (i ? ", " : "") + ids[i];
+    if (ids.size() > 10) text += " and " + std::to_string(ids.size() - 10) + " more";
+    return text;
+}
+
 int report(const std::string& dir, const std::vector<double>& at) {
     const SweepSummary s = write_sweep_csv(dir, at);
     std::cout << dir << "/sweep.csv: " << s.runs << " runs, " << s.completed << " completed, " << s.stopped
@@ -208,7 +220,13 @@ int sweep_command(const Args& args) {
             for (const std::string& value : values_to_check(plan, k, vm.count("sample") > 0)) {
                 std::vector<Override> one = first;
                 one[k].value = value;
-                read_scene(scene, one);
+                try {
+                    read_scene(scene, one);
+                } catch (const SceneError& e) {
+                    std::cerr << "plastica: " << e.what() << "\n  refused before any run: " << plan.keys[k] << " = " << value
+                              << " in " << runs_taking(plan, k, value) << "\n";
+                    return bad_input;
+                }
             }
     } catch (const SceneError& e) {
         std::cerr << "plastica: " << e.what() << "\n";

@@ -13,6 +13,7 @@
 #include "scene_reader.hpp"
 #include "step_dataset.hpp"
 #include "vtu_series_writer.hpp"
+#include "numpy_arrays.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -169,48 +170,12 @@ void write_run(const Run& run, const std::string& folder) {
     write_run_report((fs::path(folder) / "run.json").string(), run.report);
 }
 
-py::array to_numpy(const XmlArray& a) {
-    const std::size_t tuples = a.tuples();
-    std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(tuples)};
-    if (a.components > 1) shape.push_back(a.components);
-    if (const auto* d = std::get_if<std::vector<double>>(&a.values)) {
-        py::array_t<double> out(shape);
-        std::copy(d->begin(), d->end(), out.mutable_data());
-        return std::move(out);
-    }
-    if (const auto* i = std::get_if<std::vector<std::int32_t>>(&a.values)) {
-        py::array_t<std::int32_t> out(shape);
-        std::copy(i->begin(), i->end(), out.mutable_data());
-        return std::move(out);
-    }
-    return py::array(py::cast(std::get<std::vector<std::string>>(a.values)));
-}
-
-py::dict arrays(const std::vector<XmlArray>& list) {
-    py::dict d;
-    for (const XmlArray& a : list) d[py::str(a.name)] = to_numpy(a);
-    return d;
-}
-
-// One step's arrays: points (n × 3, deformed), lines (elements' node pairs), and the point, cell
-// and field arrays by the result schema's names.
+// One step's arrays (numpy_arrays.hpp).
 py::dict step_arrays(const Run& run, int k) {
     if (k < 0) k += static_cast<int>(run.steps.size());
     if (k < 0 || k >= static_cast<int>(run.steps.size())) throw py::index_error("no step " + std::to_string(k));
     const StepResult& s = run.steps[static_cast<std::size_t>(k)];
-    const XmlDataset grid = (*run.dataset)(s, static_cast<double>(s.step));
-    py::dict out;
-    py::array_t<double> points({static_cast<py::ssize_t>(grid.point_count()), py::ssize_t{3}});
-    std::copy(grid.points.begin(), grid.points.end(), points.mutable_data());
-    py::array_t<std::int64_t> lines({static_cast<py::ssize_t>(grid.lines.size()), py::ssize_t{2}});
-    for (std::size_t e = 0; e < grid.lines.size(); ++e)
-        for (int j = 0; j < 2; ++j) lines.mutable_at(e, j) = grid.lines[e][static_cast<std::size_t>(j)];
-    out["points"] = points;
-    out["lines"] = lines;
-    out["point"] = arrays(grid.point_data);
-    out["cell"] = arrays(grid.cell_data);
-    out["field"] = arrays(grid.field_data);
-    return out;
+    return dataset_arrays((*run.dataset)(s, static_cast<double>(s.step)));
 }
 
 } // namespace
@@ -239,5 +204,6 @@ PYBIND11_MODULE(_plastica, m) {
           py::arg("count"), py::arg("step"));
     m.def("buckling_of_scene", &buckling_of_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),
           py::arg("count"), py::arg("step"));
+    bind_result_folder(m);
     m.attr("version") = PLASTICA_VERSION;
 }

@@ -5,7 +5,7 @@
 set -euo pipefail
 packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libspectra-dev libtomlplusplus-dev nlohmann-json3-dev libboost-program-options-dev zlib1g-dev liblz4-dev
           libvtk9-dev libpng-dev libosmesa6-dev libglew-dev fonts-dejavu-core catch2 libbenchmark-dev ffmpeg parallel
-          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-nbclient jupyter-nbconvert python3-ipykernel "$@")
+          pybind11-dev python3-dev python3-venv python3-numpy python3-pytest python3-matplotlib python3-nbclient jupyter-nbconvert python3-ipykernel "$@")
 # One dpkg-query for all: the check runs before every make run.
 installed=$(dpkg-query -W -f='${Package} ${Status}\n' "${packages[@]}" 2>/dev/null | awk '/install ok installed/ {print $1}' || true)
 missing=()

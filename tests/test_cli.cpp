@@ -529,6 +529,8 @@ TEST_CASE("A sweep with a bad value anywhere in its lists starts no run and writ
                                  " --vary analysis.increment=1,2 -o " + dir.string() + mode);
         CHECK(r.code == 2);
         CHECK_THAT(r.output, Catch::Contains("got 'bogus'"));
+        // The key, the value and the runs it would have been (the grid's third and fourth).
+        CHECK_THAT(r.output, Catch::Contains("analysis.scheme = bogus in runs r0003, r0004"));
         CHECK_FALSE(fs::exists(dir / "runs"));
         CHECK_FALSE(fs::exists(dir / "jobs.txt"));
     }

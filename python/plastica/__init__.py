@@ -14,6 +14,7 @@ located as the command line locates them (file and line, or the key path for a d
 docs/python.md has the whole interface.
 """
 
+import builtins
 import csv
 import io
 import json
@@ -30,7 +31,7 @@ from ._locations import DRAWING_PROGRAM
 SceneError = _plastica.SceneError
 __version__ = _plastica.version
 
-__all__ = ["run", "render", "read_table", "Result", "Step", "SceneError", "to_toml"]
+__all__ = ["run", "open", "render", "section", "study", "sweep", "compare", "read_table", "Result", "Step", "SceneError", "to_toml", "modes", "buckling"]
 
 
 def _toml_key(key):
@@ -96,7 +97,7 @@ def _columns(rows):
 def read_table(path):
     """A CSV that Plastica writes (curve.csv, sweep.csv, a study's table) as a dict of numpy
     arrays, one per column: numbers as float, other columns as str. pandas.DataFrame(...) takes it."""
-    with open(path, encoding="utf-8", newline="") as f:
+    with builtins.open(path, encoding="utf-8", newline="") as f:
         return _columns([row for row in csv.reader(f) if row])
 
 
@@ -116,41 +117,57 @@ class Step:
 
 
 class Result:
-    """A finished run (completed or stopped: see `status` and `reason`)."""
+    """A finished run (completed or stopped: see `status` and `reason`): one run in memory
+    (plastica.run), or an output folder read back (plastica.open). Pickling keeps its curve, report
+    and every step's arrays, so a process pool may return it."""
 
-    def __init__(self, run):
-        self._run = run
-        self.status = run.status
-        self.reason = run.reason
-        self.curve = _columns([row for row in csv.reader(io.StringIO(run.curve_csv)) if row])
+    def __init__(self, source):
+        self._source = source
         self._report = None
+        if hasattr(source, "status"):
+            self.status, self.reason, self._scene_name = source.status, source.reason, source.scene_name
+        else:
+            self.status = self.report.get("status", "")
+            self.reason = self.report.get("reason", "")
+            self._scene_name = self.report.get("scene", "")
+        self.curve = _columns([row for row in csv.reader(io.StringIO(source.curve_csv)) if row])
 
     @property
     def report(self):
         """What run.json holds, as a dict."""
         if self._report is None:
-            self._report = json.loads(self._run.report_json)
+            self._report = json.loads(self._source.report_json)
         return self._report
 
     @property
     def steps(self):
         """How many steps the run kept (the unloaded state, step 0, included)."""
-        return self._run.step_count
+        return self._source.step_count
 
     def step(self, k):
         """Step k of those kept (negative k counts from the last)."""
-        return Step(self._run.step_arrays(k))
+        return Step(self._source.step_arrays(k))
 
     def write(self, folder):
         """Writes the VTU/PVD series, curve.csv and run.json into folder, as `plastica run --no-render`."""
+        if not hasattr(self._source, "write"):
+            raise RuntimeError("this Result holds a run's arrays, not the run: write it before pickling it, "
+                               "or pickle plastica.open(folder) of the folder it was written to")
         os.makedirs(folder, exist_ok=True)
-        self._run.write(os.fspath(folder))
+        self._source.write(os.fspath(folder))
         return folder
 
     def dataframe(self):
         """The curve as a pandas DataFrame (pandas is needed for this alone)."""
         import pandas
         return pandas.DataFrame(self.curve)
+
+    def __reduce__(self):
+        if isinstance(self._source, _plastica.ResultFolder):
+            return (open, (self._source.folder,))
+        steps = [self._source.step_arrays(k) for k in range(self.steps)]
+        return (_stored_result, (self.status, self.reason, self._scene_name, self._source.curve_csv,
+                                 self._source.report_json, steps))
 
     def _repr_png_(self):
         """The load–displacement chart, as Jupyter shows a Result (matplotlib, no pyplot state)."""
@@ -166,7 +183,7 @@ class Result:
             return f"{text} ({unit})" if unit else text
         ax.set_xlabel(label("displacement_label", "displacement_unit"))
         ax.set_ylabel(label("load_label", "load_unit"))
-        ax.set_title(f"{first.get('title', self._run.scene_name)}: {self.status}")
+        ax.set_title(f"{first.get('title', self._scene_name)}: {self.status}")
         ax.grid(True, alpha=0.3)
         fig.tight_layout()
         out = io.BytesIO()
@@ -174,7 +191,35 @@ class Result:
         return out.getvalue()
 
     def __repr__(self):
-        return f"<plastica.Result {self._run.scene_name}: {self.status}, {self.steps} steps>"
+        return f"<plastica.Result {self._scene_name}: {self.status}, {self.steps} steps>"
+
+
+class _StoredRun:
+    """What a pickled Result carries: its texts and every step's arrays."""
+
+    def __init__(self, status, reason, scene_name, curve_csv, report_json, steps):
+        self.status, self.reason, self.scene_name = status, reason, scene_name
+        self.curve_csv, self.report_json, self._steps = curve_csv, report_json, steps
+
+    @property
+    def step_count(self):
+        return len(self._steps)
+
+    def step_arrays(self, k):
+        return self._steps[k]
+
+
+def _stored_result(status, reason, scene_name, curve_csv, report_json, steps):
+    return Result(_StoredRun(status, reason, scene_name, curve_csv, report_json, steps))
+
+
+def open(folder):  # noqa: A001 (plastica.open, as the command line's output folders are opened)
+    """An output folder that `plastica run` or Result.write wrote (run.json, curve.csv and the VTU
+    series, each step read when asked for) as a Result, equal to the one the run returned."""
+    try:
+        return Result(_plastica.ResultFolder(os.fspath(folder)))
+    except ValueError as error:
+        raise ValueError(f"plastica.open: {error}") from None
 
 
 def _scene_source(scene):
@@ -256,3 +301,6 @@ def render(result, folder, size=(1280, 720), options=()):
     if done.returncode != 0:
         raise RuntimeError(f"plastica render failed ({done.returncode}): {done.stderr.strip()}")
     return folder
+
+
+from .commands import compare, section, study, sweep  # noqa: E402 (they use the helpers above)
