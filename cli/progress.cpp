@@ -16,8 +16,8 @@ std::string duration_text(double seconds) {
     return text;
 }
 
-Progress::Progress(std::string what, int every)
-    : what_(std::move(what)), every_(every < 1 ? 1 : every), terminal_(isatty(STDERR_FILENO) != 0),
+Progress::Progress(std::string what, int every, std::string unit)
+    : what_(std::move(what)), every_(every), unit_(std::move(unit)), terminal_(isatty(STDERR_FILENO) != 0),
       start_(std::chrono::steady_clock::now()), last_(start_) {}
 
 Progress::~Progress() { finish(); }
@@ -25,8 +25,8 @@ Progress::~Progress() { finish(); }
 void Progress::update(int count, double done, const std::string& status) {
     const auto now = std::chrono::steady_clock::now();
     // Redrawn at most ten times a second: a fast run is not slowed by its own display.
-    if (terminal_ && open_ && now - last_ < std::chrono::milliseconds(100)) return;
-    if (!terminal_ && count % every_ != 0) return;
+    if (terminal_ && open_ && done < 1.0 && now - last_ < std::chrono::milliseconds(100)) return;
+    if (!terminal_ && (every_ <= 0 || count % every_ != 0)) return;
     last_ = now;
     const double share = std::fmax(0.0, std::fmin(done, 1.0));
     std::string line = what_ + (terminal_ ? " " : ": ");
@@ -42,6 +42,11 @@ void Progress::update(int count, double done, const std::string& status) {
     }
     line += status;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (terminal_ && !unit_.empty() && elapsed > 0.05) {
+        char rate[48];
+        std::snprintf(rate, sizeof rate, "  %.3g %s/s", count / elapsed, unit_.c_str());
+        line += rate;
+    }
     if (done > 0.02 && done < 1.0) line += "  about " + duration_text(elapsed * (1.0 - done) / done) + " left";
     // In a log each update is a line of its own, with the same share and estimate.
     if (!terminal_) {

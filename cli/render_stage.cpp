@@ -25,7 +25,7 @@ int render_and_report(const std::string& series, const render::RenderOptions& op
     const std::string output = pictures_folder(series, options);
     try {
         render::RenderOptions with_progress = options;
-        Progress progress("drawing", 25);
+        Progress progress("drawing", 25, "frames");
         if (!options.quiet)
             with_progress.on_frame = [&progress](int done, int total) {
                 progress.update(done, static_cast<double>(done) / total, "frame " + std::to_string(done) + " of " + std::to_string(total));

@@ -13,6 +13,7 @@
 #include "analysis/path_following.hpp"
 #include "curve_writer.hpp"
 #include "model_building.hpp"
+#include "run_progress.hpp"
 #include "run_report.hpp"
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
@@ -207,8 +208,7 @@ int run_command(const Args& args) {
         for (const std::string& note : report.drawing_notes) std::cerr << "plastica: note: " << note << "\n";
     }
     const bool quiet = vm.count("quiet") > 0;
-    Progress progress("solving", 20);
-    const AnalysisSpec& a = model.analysis;
+    Progress progress("solving", 20, "steps");
     auto track = [&](const StepResult& r) {
         report.last = final_state(model, r);
         if (r.critical) {
@@ -220,10 +220,7 @@ int run_command(const Args& args) {
             report.peak_load_displacement = r.control_displacement;
         }
         if (quiet) return;
-        // The share done, where one target ends the run.
-        double done = -1.0;
-        if (model.stages.empty() && a.target_displacement) done = r.control_displacement / *a.target_displacement;
-        if (model.stages.empty() && a.target_load_factor) done = std::abs(r.load_factor / *a.target_load_factor);
+        const double done = share_done(model, r);
         std::ostringstream status;
         status << "step " << r.step << "  " << model.report.load_label << " " << r.load + 0.0 << "  "
                << model.report.displacement_label << " " << r.control_displacement + 0.0 << "  iterations " << r.iterations;

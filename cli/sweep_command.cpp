@@ -3,6 +3,7 @@
 // as jobs for GNU Parallel and a Slurm array; plastica merge: sweep.csv from whatever runs exist.
 #include "commands.hpp"
 #include "options.hpp"
+#include "progress.hpp"
 #include "default_folder.hpp"
 
 #include "atomic_file.hpp"
@@ -173,6 +174,7 @@ int sweep_command(const Args& args) {
         ("emit", po::value<std::string>(), "'jobs': write jobs.txt and sweep.sbatch instead of running")
         ("at", po::value<std::string>(), "displacements where sweep.csv reports the load, e.g. 50,100")
         ("no-charts", "sweep.csv only, no charts")
+        ("quiet,q", "no progress on stderr")
         ("run-output", po::value<std::string>()->default_value("curves"),
          "what each run writes: curves (curve.csv, run.json), series (and its VTU series) or pictures (and its frames, chart and animation)");
     po::positional_options_description positional;
@@ -278,12 +280,20 @@ int sweep_command(const Args& args) {
     const int jobs = std::max(1, vm["jobs"].as<int>());
     const std::string program = self();
     std::map<pid_t, std::string> running;
-    std::size_t next = 0, skipped = 0;
+    std::size_t next = 0, skipped = 0, finished = 0;
+    Progress progress("running", 0, "runs"); // on a terminal only: a sweep's log stays as it was
+    const auto count_finished = [&](const std::string& id) {
+        ++finished;
+        if (!vm.count("quiet"))
+            progress.update(static_cast<int>(finished), static_cast<double>(finished) / static_cast<double>(plan.ids.size()),
+                            "run " + std::to_string(finished) + " of " + std::to_string(plan.ids.size()) + " (" + id + " done)");
+    };
     while ((next < plan.ids.size() && !sweep_stop_requested) || !running.empty()) {
         while (!sweep_stop_requested && next < plan.ids.size() && static_cast<int>(running.size()) < jobs) {
             const std::size_t r = next++;
             if (run_finished(dir, plan.ids[r])) {
                 ++skipped;
+                count_finished(plan.ids[r]);
                 continue;
             }
             const pid_t pid = launch(program, run_arguments(scene, dir, plan, r, output), fs::path(dir) / "logs" / (plan.ids[r] + ".txt"));
@@ -292,8 +302,12 @@ int sweep_command(const Args& args) {
         if (running.empty()) break;
         int status = 0;
         const pid_t done = ::waitpid(-1, &status, 0);
-        if (done > 0) running.erase(done);
+        if (done > 0 && running.count(done)) {
+            count_finished(running[done]);
+            running.erase(done);
+        }
     }
+    progress.finish();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (skipped > 0) std::cout << skipped << " runs had finished before and were kept\n";

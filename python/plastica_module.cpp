@@ -8,6 +8,7 @@
 #include "curve_writer.hpp"
 #include "model_building.hpp"
 #include "output_folder.hpp"
+#include "run_progress.hpp"
 #include "run_report.hpp"
 #include "scene_overrides.hpp"
 #include "scene_reader.hpp"
@@ -19,6 +20,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -54,8 +56,11 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 // Reads and runs a scene: `source` is a path, or TOML text when `name` is given (then `name`
 // stands for the file in messages; "" for a dict, whose errors name key paths only).
+// `progress`, unless None, is called with (step, share done or −1, load, control displacement)
+// at most ten times a second and at the last step, with the GIL; what it raises stops the run and
+// is raised again.
 std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const std::string& name,
-                               const std::vector<std::pair<std::string, std::string>>& overrides) {
+                               const std::vector<std::pair<std::string, std::string>>& overrides, const py::object& progress) {
     auto run = std::make_shared<Run>();
     for (const auto& [path, value] : overrides) run->overrides.push_back({path, value});
     const auto t0 = std::chrono::steady_clock::now();
@@ -82,7 +87,25 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
         for (const Override& o : run->overrides) report.overrides.emplace_back(o.path, o.value);
         run->curve_csv = curve_header(run->model);
         const auto t1 = std::chrono::steady_clock::now();
+        std::atomic<bool> stop{false};
+        std::optional<py::error_already_set> raised;
+        auto shown = t1 - std::chrono::seconds(1); // the first step is shown
+        const auto show = [&](const StepResult& r, bool last) {
+            const auto now = std::chrono::steady_clock::now();
+            if (progress.is_none() || raised || (!last && now - shown < std::chrono::milliseconds(100))) return;
+            shown = now;
+            py::gil_scoped_acquire locked;
+            try {
+                progress(r.step, share_done(run->model, r), r.load, r.control_displacement);
+            } catch (py::error_already_set& e) {
+                raised.emplace(std::move(e));
+                stop = true;
+            }
+        };
+        RunControl control;
+        control.interrupt = &stop;
         report.summary = analysis.run({[&](const StepResult& r) {
+            show(r, false);
             run->curve_csv += curve_row(run->model, r);
             report.last = final_state(run->model, r);
             if (r.load > report.peak_load) {
@@ -90,7 +113,12 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
                 report.peak_load_displacement = r.control_displacement;
             }
             run->steps.push_back(r);
-        }});
+        }}, control);
+        if (!run->steps.empty()) show(run->steps.back(), true);
+        if (raised) {
+            py::gil_scoped_acquire locked;
+            throw std::move(*raised);
+        }
         report.stage_seconds = {{"read", read_seconds}, {"analysis", seconds_since(t1)}};
         run->summary = report.summary;
     }
@@ -199,7 +227,8 @@ PYBIND11_MODULE(_plastica, m) {
         .def_property_readonly("step_count", [](const Run& r) { return r.steps.size(); })
         .def("step_arrays", &step_arrays, py::arg("k"))
         .def("write", &write_run, py::arg("folder"));
-    m.def("run_scene", &run_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"));
+    m.def("run_scene", &run_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),
+          py::arg("progress") = py::none());
     m.def("modes_of_scene", &modes_of_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),
           py::arg("count"), py::arg("step"));
     m.def("buckling_of_scene", &buckling_of_scene, py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"),

@@ -248,17 +248,50 @@ def _named_path(message, scene):
     return message
 
 
-def run(scene, overrides=None):
+def _progress_callback(progress):
+    """The callback run() hands the engine: the user's own, or with progress=True a tqdm bar where
+    tqdm is installed, else a line on stderr redrawn in place."""
+    if progress is None or progress is False:
+        return None, None
+    if callable(progress):
+        return progress, None
+    try:
+        from tqdm import tqdm
+        bar = tqdm(total=100, unit="%", bar_format="{l_bar}{bar}| {n:.0f}/100 % [{elapsed}<{remaining}]")
+
+        def show(step, share, load, displacement):
+            bar.set_postfix_str(f"step {step}  load {load:.4g}")
+            if share >= 0.0:
+                bar.update(100.0 * share - bar.n)
+        return show, bar.close
+    except ImportError:
+        import sys
+
+        def show(step, share, load, displacement):
+            done = f"{100.0 * share:3.0f} %  " if share >= 0.0 else ""
+            sys.stderr.write(f"\rsolving {done}step {step}  load {load:.6g}  control displacement {displacement:.6g}")
+            sys.stderr.flush()
+        return show, lambda: sys.stderr.write("\n")
+
+
+def run(scene, overrides=None, progress=None):
     """Runs a scene (a path, TOML text or a dict) with overrides {key path: value}, as
-    `plastica run SCENE --set KEY=VALUE ...`. Returns a Result; the GIL is released while it runs."""
+    `plastica run SCENE --set KEY=VALUE ...`. Returns a Result; the GIL is released while it runs.
+    progress: a callable (step, share done in [0, 1] or −1 when unknown, load, control
+    displacement), called at most ten times a second and at the last step; or True for a tqdm bar
+    (a line on stderr without tqdm). What the callable raises stops the run and is raised."""
     source, is_text, name = _scene_source(scene)
     pairs = [(str(k), _toml_value(v, str(k))) for k, v in (overrides or {}).items()]
+    callback, close = _progress_callback(progress)
     try:
-        return Result(_plastica.run_scene(source, is_text, name, pairs))
+        return Result(_plastica.run_scene(source, is_text, name, pairs, callback))
     except SceneError as error:
         if isinstance(scene, dict):
             raise SceneError(_named_path(str(error), scene)) from None
         raise
+    finally:
+        if close:
+            close()
 
 
 def modes(scene, count=6, step=0, overrides=None):
