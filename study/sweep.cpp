@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -134,8 +135,9 @@ std::optional<RunRecord> run_record(const nlohmann::json& j, std::string& proble
             !peak.value("control_displacement", nlohmann::json(NAN)).is_number())
             return problem = "'peak' is not an object of numbers", std::nullopt;
         r.has_peak = true;
-        r.peak_load = peak.value("load", NAN);
-        r.peak_displacement = peak.value("control_displacement", NAN);
+        // A double default: NAN alone is a float, and value() returns its default's type.
+        r.peak_load = peak.value("load", static_cast<double>(NAN));
+        r.peak_displacement = peak.value("control_displacement", static_cast<double>(NAN));
     }
     if (j.contains("seconds")) {
         if (!j["seconds"].is_object()) return problem = "'seconds' is not an object", std::nullopt;
@@ -145,6 +147,14 @@ std::optional<RunRecord> run_record(const nlohmann::json& j, std::string& proble
         }
     }
     return r;
+}
+
+// The shortest text that reads back as the same double: the precision the value carries (run.json
+// writes its numbers so), no more and no less.
+std::string shortest(double v) {
+    if (std::isnan(v)) return "nan";
+    char text[32];
+    return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
 }
 
 std::string number(double v) {
@@ -396,7 +406,6 @@ SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& 
     const SweepPlan plan = read_plan(dir);
     SweepSummary summary;
     std::ostringstream out;
-    out.precision(10);
     out << "id";
     for (const std::string& k : plan.keys) out << ',' << csv_field(k);
     out << ",status,reason,peak_load,peak_displacement";
@@ -444,14 +453,14 @@ SweepSummary write_sweep_csv(const std::string& dir, const std::vector<double>& 
         else if (status == "interrupted") ++summary.failed, summary.failed_ids.push_back(id);
         else ++summary.stopped;
         out << ',' << csv_field(status) << ',' << csv_field(record->reason);
-        out << ',' << record->peak_load << ',' << record->peak_displacement;
+        out << ',' << shortest(record->peak_load) << ',' << shortest(record->peak_displacement);
         const Curve curve = read_run_curve(dir, id);
         for (double d : at) {
             const double p = curve.displacement.size() > 1 ? load_at(curve, d) : NAN;
             out << ',';
-            if (std::isfinite(p)) out << p;
+            if (std::isfinite(p)) out << shortest(p);
         }
-        out << ',' << record->iterations << ',' << record->steps << ',' << record->seconds << '\n';
+        out << ',' << record->iterations << ',' << record->steps << ',' << shortest(record->seconds) << '\n';
     }
     write_file_atomically((fs::path(dir) / "sweep.csv").string(), out.str());
     return summary;

@@ -2,9 +2,11 @@
 // and the springs, in force and in moment about a point, in the deformed configuration.
 #include "analysis_helpers.hpp"
 #include "analysis/support_reactions.hpp"
+#include "curve_writer.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace plastica;
@@ -85,4 +87,80 @@ TEST_CASE("Each fixed DOF is one reaction column, reported by the first support 
                                    "scheme = \"load_control\"\nincrement = 0.5\ntarget_load_factor = 1.0\n");
     const Model m = read_scene_text(scene, "beam.toml");
     CHECK(reaction_columns(m) == std::vector<std::string>{"support1_fx", "support1_fy", "support1_mz", "support3_fy"});
+}
+
+TEST_CASE("curve.csv's base shear is the sum of the supports' x reactions, the side load a frame carries", "[reactions]") {
+    // A fixed-base portal pushed sideways by λ (and pressed by 10 λ on each column): the
+    // supports hold the whole side load, so the base shear is λ at every step.
+    const Run r = run_scene(R"([scene]
+name = "portal"
+[[material]]
+name = "m"
+E = 1.0e3
+[[section]]
+name = "s"
+material = "m"
+A = 1.0e5
+I = 1.0
+[[line]]
+start = [0.0, 0.0]
+end = [0.0, 4.0]
+elements = 4
+section = "s"
+[[line]]
+start = [0.0, 4.0]
+end = [6.0, 4.0]
+elements = 4
+section = "s"
+[[line]]
+start = [6.0, 4.0]
+end = [6.0, 0.0]
+elements = 4
+section = "s"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[support]]
+at = [6.0, 0.0]
+fix = ["ux", "uy"]
+[[load]]
+at = [0.0, 4.0]
+fx = 1.0
+[[load]]
+at = [0.0, 4.0]
+fy = -10.0
+[[load]]
+at = [6.0, 4.0]
+fy = -10.0
+[analysis]
+scheme = "load_control"
+increment = 0.5
+target_load_factor = 2.0
+control_at = [0.0, 4.0]
+control_dof = "ux"
+)");
+    REQUIRE(r.summary.status == RunStatus::completed);
+    const std::string header = curve_header(r.model);
+    std::vector<std::string> columns;
+    for (std::size_t at = 0, end; at < header.size(); at = end + 1) {
+        end = header.find_first_of(",\n", at);
+        columns.push_back(header.substr(at, end - at));
+    }
+    const auto column = [&](const std::string& name) {
+        const auto it = std::find(columns.begin(), columns.end(), name);
+        REQUIRE(it != columns.end());
+        return static_cast<std::size_t>(it - columns.begin());
+    };
+    for (const StepResult& s : r.steps) {
+        const std::string row = curve_row(r.model, s);
+        std::vector<double> cells;
+        for (std::size_t at = 0, end; at < row.size(); at = end + 1) {
+            end = row.find_first_of(",\n", at);
+            const std::string cell = row.substr(at, end - at);
+            cells.push_back(cell.empty() || !(std::isdigit(static_cast<unsigned char>(cell[0])) || cell[0] == '-') ? NAN : std::stod(cell));
+        }
+        const double shear = cells[column("base_shear")];
+        CHECK(shear == Approx(-(cells[column("support1_fx")] + cells[column("support2_fx")])).margin(1e-9));
+        CHECK(shear == Approx(s.load_factor).epsilon(1e-9).margin(1e-12));
+    }
 }
