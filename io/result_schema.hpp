@@ -104,6 +104,7 @@ inline constexpr const char* axial_force = "axial_force";
 inline constexpr const char* moment_i = "moment_i";
 inline constexpr const char* moment_j = "moment_j";
 inline constexpr const char* shear = "shear";
+inline constexpr const char* end_forces = "end_forces";
 inline constexpr const char* yielded_share = "yielded_share";
 inline constexpr const char* section_yielded_share = "section_yielded_share";
 inline constexpr const char* section_curvature = "section_curvature";

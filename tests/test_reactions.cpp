@@ -3,6 +3,7 @@
 #include "analysis_helpers.hpp"
 #include "analysis/support_reactions.hpp"
 #include "curve_writer.hpp"
+#include "step_dataset.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -89,10 +90,11 @@ TEST_CASE("Each fixed DOF is one reaction column, reported by the first support 
     CHECK(reaction_columns(m) == std::vector<std::string>{"support1_fx", "support1_fy", "support1_mz", "support3_fy"});
 }
 
-TEST_CASE("curve.csv's base shear is the sum of the supports' x reactions, the side load a frame carries", "[reactions]") {
-    // A fixed-base portal pushed sideways by λ (and pressed by 10 λ on each column): the
-    // supports hold the whole side load, so the base shear is λ at every step.
-    const Run r = run_scene(R"([scene]
+namespace {
+
+// A fixed-base portal pushed sideways by λ (and pressed by 10 λ on each column), its right base pinned.
+std::string side_loaded_portal() {
+    return R"([scene]
 name = "portal"
 [[material]]
 name = "m"
@@ -138,7 +140,15 @@ increment = 0.5
 target_load_factor = 2.0
 control_at = [0.0, 4.0]
 control_dof = "ux"
-)");
+)";
+}
+
+} // namespace
+
+TEST_CASE("curve.csv's base shear is the sum of the supports' x reactions, the side load a frame carries", "[reactions]") {
+    // A fixed-base portal pushed sideways by λ (and pressed by 10 λ on each column): the
+    // supports hold the whole side load, so the base shear is λ at every step.
+    const Run r = run_scene(side_loaded_portal());
     REQUIRE(r.summary.status == RunStatus::completed);
     const std::string header = curve_header(r.model);
     std::vector<std::string> columns;
@@ -162,5 +172,36 @@ control_dof = "ux"
         const double shear = cells[column("base_shear")];
         CHECK(shear == Approx(-(cells[column("support1_fx")] + cells[column("support2_fx")])).margin(1e-9));
         CHECK(shear == Approx(s.load_factor).epsilon(1e-9).margin(1e-12));
+    }
+}
+
+TEST_CASE("Global end forces balance the loads and reactions at every node", "[reactions]") {
+    // The VTU's end_forces are what the nodes exert on each element: at a node, their sum over the
+    // elements meeting there is the load applied there plus the support's reaction.
+    const Run r = run_scene(side_loaded_portal());
+    REQUIRE(r.summary.status == RunStatus::completed);
+    const StepDataset dataset(r.model);
+    const XmlDataset d = dataset(r.steps.back(), 0.0);
+    const auto array = [](const std::vector<XmlArray>& list, const char* name) -> const std::vector<double>& {
+        const auto it = std::find_if(list.begin(), list.end(), [&](const XmlArray& a) { return a.name == name; });
+        REQUIRE(it != list.end());
+        return std::get<std::vector<double>>(it->values);
+    };
+    const std::vector<double>& ends = array(d.cell_data, "end_forces");
+    const std::vector<double>& load = array(d.point_data, "applied_load");
+    const std::vector<double>& moment = array(d.point_data, "applied_moment");
+    const std::vector<double>& reaction = array(d.point_data, "reaction");
+    const std::vector<double>& reaction_moment = array(d.point_data, "reaction_moment");
+    std::vector<double> sum(3 * r.model.nodes.size(), 0.0);
+    for (std::size_t e = 0; e < r.model.elements.size(); ++e)
+        for (int k = 0; k < 3; ++k) {
+            sum[3 * r.model.elements[e].node_i + k] += ends[6 * e + k];
+            sum[3 * r.model.elements[e].node_j + k] += ends[6 * e + 3 + k];
+        }
+    for (std::size_t n = 0; n < r.model.nodes.size(); ++n) {
+        CAPTURE(n);
+        CHECK(sum[3 * n] == Approx(load[3 * n] + reaction[3 * n]).margin(1e-8));
+        CHECK(sum[3 * n + 1] == Approx(load[3 * n + 1] + reaction[3 * n + 1]).margin(1e-8));
+        CHECK(sum[3 * n + 2] == Approx(moment[n] + reaction_moment[n]).margin(1e-8));
     }
 }
