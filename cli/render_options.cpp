@@ -14,7 +14,7 @@ void add_render_options(po::options_description& options) {
         ("shapes", po::value<std::string>(), "displacements d1,d2,…: shapes.png, the deformed shapes there drawn over each other (an --overlay run beside)")
         ("overlay-csv", po::value<std::vector<std::string>>()->composing(), "FILE:label, points (displacement, load per line) drawn over chart.png, e.g. digitised from a paper (repeatable)")
         ("steps", po::value<std::string>(), "draw only these step numbers, e.g. 0,104,200")
-        ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,contact,supports,loads")
+        ("hide", po::value<std::string>(), "leave out layers: initial,base,hinges,releases,contact,surface_contact,supports,loads (point and line loads)")
         ("show", po::value<std::string>(), "draw layers left out by default: reactions (the supports' forces and moments)")
         ("magnify", po::value<std::string>()->default_value("1"), "draw displacements × k: a factor, or auto (about 10 % of the size for a stiff structure without a rigid base)")
         ("no-animation", "PNG frames only, no GIF")

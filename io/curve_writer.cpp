@@ -77,8 +77,9 @@ std::string curve_header(const Model& model) {
         header += ',' + name;
         shear = shear || (name.size() > 3 && name.compare(name.size() - 3, 3, "_fx") == 0);
     }
-    // A frame's base shear: what the structure pushes its supports with along x.
-    if (shear) header += ",base_shear";
+    // A frame's base shear: what the structure pushes its supports with along x (not a half
+    // model's, whose x reactions hold its symmetry line).
+    if (shear && !model.report.mirror_x) header += ",base_shear";
     // An elastic path: the critical point a step passed, and where it lies (empty elsewhere).
     if (model.tracks_critical_points()) header += ",critical_point,critical_load_factor";
     // Motion in time: the time and the energy accounts (EnergyTerms).
@@ -104,14 +105,14 @@ std::string curve_row(const Model& model, const StepResult& r) {
     for (int p : result::active_patterns(model))
         row << ',' << (static_cast<std::size_t>(p) < r.pattern_factors.size() ? r.pattern_factors[static_cast<std::size_t>(p)] : 0.0);
     double base_shear = 0.0;
-    bool shear = false;
+    bool shear = false; // as in curve_header
     for (const SupportReaction& s : support_reactions(model, r))
         for (int d = 0; d < dofs_per_node; ++d)
             if (s.reported[d]) {
                 row << ',' << s.force[d];
                 if (d == 0) base_shear -= s.force[d], shear = true;
             }
-    if (shear) row << ',' << base_shear + 0.0;
+    if (shear && !model.report.mirror_x) row << ',' << base_shear + 0.0;
     if (model.tracks_critical_points()) {
         if (r.critical) row << ',' << to_string(r.critical->kind) << ',' << r.critical->load_factor;
         else row << ",,";

@@ -61,6 +61,7 @@ bool present(const Array& a, const Model& m) {
     case When::critical_step: return m.tracks_critical_points();
     case When::patterns: return !active_patterns(m).empty();
     case When::moving_base_patterns: return m.has_moving_base() && !active_patterns(m).empty();
+    case When::line_loads: return !m.line_loads.empty();
     }
     return false;
 }
@@ -90,6 +91,7 @@ std::string unit(const Array& a, const std::string& length, const std::string& f
     case Q::curvature: return length.empty() ? "" : "1/" + length;
     case Q::velocity: return length.empty() ? "" : length + "/s";
     case Q::acceleration: return length.empty() ? "" : length + "/s²";
+    case Q::force_per_length: return force.empty() || length.empty() ? "" : force + "/" + length;
     case Q::none:
     case Q::reported_load:         // load_unit says it
     case Q::reported_displacement: // displacement_unit says it
@@ -101,7 +103,7 @@ std::string unit(const Array& a, const std::string& length, const std::string& f
 std::string markdown_table() {
     static const char* where_text[] = {"point", "cell", "field", "base.vtp cell"};
     static const char* type_text[] = {"Float64", "Int32", "String"};
-    static const char* quantity_text[] = {"", "length", "rad", "force", "force·length", "1/length", "load_unit", "displacement_unit", "length/s", "length/s²"};
+    static const char* quantity_text[] = {"", "length", "rad", "force", "force·length", "1/length", "load_unit", "displacement_unit", "length/s", "length/s²", "force/length"};
     static const char* when_text[] = {"always", "supports or prescribed displacements", "supports", "loads or pressure",
                                       "bilateral springs", "a rigid base or tensionless bed", "plastic hinges",
                                       "distributed plasticity", "a half model (`mirror_x`)", "units named in `[report]`",
@@ -109,7 +111,8 @@ std::string markdown_table() {
                                       "two or more load patterns", "a moving base and two or more load patterns",
                                       "released member ends", "self-contact (`[[self_contact]]`)",
                                       "members (`[[line]]`, `[[arc]]`)", "a transient stage",
-                                      "an elastic path, in the step that passes a bifurcation or limit point"};
+                                      "an elastic path, in the step that passes a bifurcation or limit point",
+                                      "line loads (`[[distributed_load]]` `wx`, `wy`)"};
     std::ostringstream out;
     out << "| array | where | type | components | unit | written for | meaning |\n"
         << "|---|---|---|---|---|---|---|\n";

@@ -19,7 +19,7 @@ namespace plastica::result {
 enum class Where { point, cell, field, base };
 enum class Type { float64, int32, text };
 // What an array's values measure, for their unit.
-enum class Quantity { none, length, rotation, force, moment, curvature, reported_load, reported_displacement, velocity, acceleration };
+enum class Quantity { none, length, rotation, force, moment, curvature, reported_load, reported_displacement, velocity, acceleration, force_per_length };
 // Which scenes write an array: only what a scene needs (no empty arrays).
 enum class When {
     always,
@@ -42,6 +42,7 @@ enum class When {
     members,                 // [[line]]s or [[arc]]s (not only [[element]]s given one by one)
     transient,               // a stage integrates in time
     critical_step,           // an elastic path's step that passes a bifurcation or limit point (that step only)
+    line_loads,              // [[distributed_load]] wx or wy
 };
 
 struct Array {
@@ -92,6 +93,7 @@ inline constexpr const char* reaction_moment = "reaction_moment";
 inline constexpr const char* support = "support";
 inline constexpr const char* applied_load = "applied_load";
 inline constexpr const char* applied_moment = "applied_moment";
+inline constexpr const char* line_load = "line_load";
 inline constexpr const char* spring_force = "spring_force";
 inline constexpr const char* spring_moment = "spring_moment";
 inline constexpr const char* contact_force = "contact_force";

@@ -97,6 +97,7 @@ void SceneBuilder::read_distributed_loads(TomlTableReader& top) {
             const ElementSpec& el = model_.elements[e];
             for (int node : {el.node_i, el.node_j}) moves = moves || !supported(node, 0) || !supported(node, 1);
             if (pressure != 0.0) model_.pressures.push_back({e, pressure, pattern});
+            if (wx != 0.0 || wy != 0.0) model_.line_loads.push_back({e, wx, wy, pattern});
         }
         const std::map<int, std::array<double, 2>> lumped = lumped_line_load(model_, elements, {wx, wy}, gravity);
         if (!moves) r.fail("on", "every node of '" + on + "' is held: the load moves nothing");

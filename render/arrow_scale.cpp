@@ -30,9 +30,9 @@ void ArrowLabels::clear() {
     used_ = 0;
 }
 
-void ArrowLabels::add(const double tail[2], double dx, double dy, const std::string& text) {
+void ArrowLabels::add(const double tail[2], double dx, double dy, const std::string& text, bool every_time) {
     // A few values tell the scale; more would cover the structure.
-    if (written_.size() >= 6 || std::find(written_.begin(), written_.end(), text) != written_.end()) return;
+    if (written_.size() >= 6 || (!every_time && std::find(written_.begin(), written_.end(), text) != written_.end())) return;
     if (used_ == actors_.size()) {
         auto actor = vtkSmartPointer<vtkTextActor>::New();
         style_text(actor->GetTextProperty(), 12 * view_.text_scale, true);
@@ -85,7 +85,7 @@ std::string force_text(double value, const std::string& unit) { return number(va
 std::string longest_arrow_note(double largest, const std::string& unit) {
     char text[64];
     std::snprintf(text, sizeof text, "%.4g", largest);
-    return "longest: " + std::string(text) + (unit.empty() ? "" : " " + unit) + "\n(largest in the run)";
+    return "longest " + std::string(text) + (unit.empty() ? "" : " " + unit);
 }
 
 } // namespace plastica::render

@@ -41,7 +41,8 @@ public:
     // A value at the tail of an arrow pointing along (dx, dy); a value already written in this
     // frame is not written again (a line load's equal nodal forces), nor one that would cover
     // another, and at most six are. Values stay inside the drawing's sides.
-    void add(const double tail[2], double dx, double dy, const std::string& text);
+    // With every_time, the value is written even where it was already (each loaded member's own).
+    void add(const double tail[2], double dx, double dy, const std::string& text, bool every_time = false);
 
 private:
     ViewGeometry view_;

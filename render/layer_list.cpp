@@ -16,6 +16,7 @@ LayerKind contact_kind();
 LayerKind surface_contact_kind();
 LayerKind support_kind();
 LayerKind load_kind();
+LayerKind line_load_kind();
 LayerKind reaction_kind();
 
 namespace {
@@ -24,7 +25,7 @@ namespace {
 const std::vector<LayerKind>& kinds() {
     static const std::vector<LayerKind> all = {
         initial_shape_kind(), base_kind(), hinge_kind(),  release_kind(),  contact_kind(),
-        surface_contact_kind(), support_kind(), load_kind(), reaction_kind(),
+        surface_contact_kind(), support_kind(), line_load_kind(), load_kind(), reaction_kind(),
     };
     return all;
 }
@@ -40,7 +41,7 @@ std::string listed(const std::vector<std::string>& names) {
 std::vector<std::string> hideable_layers() {
     std::vector<std::string> names;
     for (const LayerKind& k : kinds())
-        if (!k.on_request) names.push_back(k.name);
+        if (!k.on_request && std::find(names.begin(), names.end(), k.name) == names.end()) names.push_back(k.name);
     return names;
 }
 
@@ -81,13 +82,20 @@ std::vector<std::unique_ptr<Layer>> make_layers(const SeriesSummary& summary, vt
 std::vector<std::string> layer_choice_notes(const SeriesSummary& summary, vtkUnstructuredGrid* first_step,
                                             vtkPolyData* base, const LayerChoice& choice) {
     check_names(choice);
-    std::vector<std::string> notes;
+    // A name may stand for several kinds (loads: point and line loads): it changes nothing only
+    // where none of them has anything to draw.
+    std::vector<std::string> named_here, drawn;
     for (const LayerKind& k : kinds()) {
         const bool hidden = !k.on_request && named(choice.hide, k.name), shown = k.on_request && named(choice.show, k.name);
-        if ((hidden || shown) && !k.make(summary, first_step, base))
-            notes.push_back(std::string(hidden ? "--hide " : "--show ") + k.name + " changes nothing: this series has no " + k.name +
-                            " to draw");
+        if (!hidden && !shown) continue;
+        if (std::find(named_here.begin(), named_here.end(), k.name) == named_here.end()) named_here.push_back(k.name);
+        if (k.make(summary, first_step, base)) drawn.push_back(k.name);
     }
+    std::vector<std::string> notes;
+    for (const std::string& name : named_here)
+        if (std::find(drawn.begin(), drawn.end(), name) == drawn.end())
+            notes.push_back(std::string(named(choice.hide, name.c_str()) ? "--hide " : "--show ") + name + " changes nothing: this series has no " +
+                            name + " to draw");
     return notes;
 }
 

@@ -1,4 +1,5 @@
 #include "series_summary.hpp"
+#include "line_load_shares.hpp"
 
 #include "figure_text.hpp"
 #include "render_error.hpp"
@@ -257,6 +258,15 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             SeriesSummary::NodalArrows* stats;
         } arrows[] = {{result::name::applied_load, result::name::applied_moment, &s.loads},
                       {result::name::reaction, result::name::reaction_moment, &s.reactions}};
+        // Line loads are drawn along their members: their nodal shares leave the load arrows.
+        const std::vector<double> shares = line_load_shares(grid);
+        if (vtkDataArray* line = grid->GetCellData()->GetArray(result::name::line_load))
+            for (vtkIdType c = 0; c < line->GetNumberOfTuples(); ++c) {
+                const double wx = line->GetComponent(c, 0), wy = line->GetComponent(c, 1), w = std::hypot(wx, wy);
+                s.line_loads.max_intensity = std::max(s.line_loads.max_intensity, w);
+                if (w <= 0.0) continue;
+                s.line_loads.sides |= (wx > 1e-6 * w ? 1 : 0) | (wx < -1e-6 * w ? 2 : 0) | (wy > 1e-6 * w ? 4 : 0) | (wy < -1e-6 * w ? 8 : 0);
+            }
         for (const auto& [force, moment, stats] : arrows) {
             vtkDataArray* a = grid->GetPointData()->GetArray(force);
             vtkDataArray* m = grid->GetPointData()->GetArray(moment);
@@ -265,7 +275,9 @@ SeriesSummary summarise(const ResultSeries& series, const std::string& requested
             if (loads) load_direction.resize(static_cast<std::size_t>(a->GetNumberOfTuples()) * 2, 0.0);
             for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
                 const double whole = on_mirror_line(s, initial->GetTuple3(i)) ? 2.0 : 1.0;
-                const double fx = whole * a->GetComponent(i, 0), fy = whole * a->GetComponent(i, 1);
+                const bool drop = loads && !shares.empty();
+                const double fx = whole * (a->GetComponent(i, 0) - (drop ? shares[2 * static_cast<std::size_t>(i)] : 0.0));
+                const double fy = whole * (a->GetComponent(i, 1) - (drop ? shares[2 * static_cast<std::size_t>(i) + 1] : 0.0));
                 const double f = std::hypot(fx, fy);
                 stats->max_force = std::max(stats->max_force, f);
                 stats->max_moment = std::max(stats->max_moment, whole * std::abs(m->GetComponent(i, 0)));

@@ -71,7 +71,11 @@ struct SeriesSummary {
         // structure turns: drawn as one arrow along the force.
         bool by_components = false;
     };
-    NodalArrows loads, reactions;
+    NodalArrows loads, reactions; // loads: point loads, line loads' nodal shares taken off
+    struct LineLoads {
+        double max_intensity = 0.0; // the largest |w| of an element in the run
+        int sides = 0;              // as NodalArrows::sides
+    } line_loads;
     double magnify = 1.0;         // displacements are drawn × this (positions x0 + k·u)
     // Options that could not act, each saying why (--magnify auto on a structure resting on a
     // base): told on stderr and kept in run.json.

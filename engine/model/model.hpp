@@ -123,6 +123,15 @@ struct ElementPressure {
     int pattern = 0;
 };
 
+// A line load in a fixed direction per unit initial length ([[distributed_load]] wx, wy) on an
+// element. The analysis takes it as the nodal loads it lumps to (in Model::loads); this record
+// is for the outputs, which draw it along the member.
+struct ElementLineLoad {
+    int element = 0;
+    double wx = 0.0, wy = 0.0;
+    int pattern = 0;
+};
+
 struct PrescribedDisplacement {
     int node = 0;
     int dof = 0;
@@ -261,6 +270,7 @@ struct Model {
     std::vector<Support> supports;
     std::vector<NodalLoad> loads; // nodal loads, line loads and self weight lumped to nodes
     std::vector<ElementPressure> pressures;
+    std::vector<ElementLineLoad> line_loads; // drawn only: their nodal shares are in `loads`
     std::vector<PrescribedDisplacement> prescribed;
     std::vector<FoundationSpring> springs;
     std::vector<SelfContactSpec> self_contact;

@@ -30,6 +30,17 @@ void fill_supports_and_loads(const StepView& v, XmlDataset& out) {
         out.point_data.push_back(std::move(fixed));
     }
     if (v.has(name::applied_load)) push_force_and_moment(out, name::applied_load, name::applied_moment, v.result.applied_load);
+    if (v.has(name::line_load)) {
+        XmlArray line = real_array(name::line_load, v.model.elements.size(), 3);
+        const std::vector<double>& factors = v.result.pattern_factors;
+        for (const ElementLineLoad& l : v.model.line_loads) {
+            const auto p = static_cast<std::size_t>(l.pattern);
+            const double factor = p < factors.size() ? factors[p] : v.result.load_factor;
+            real(line)[3 * static_cast<std::size_t>(l.element)] += factor * l.wx;
+            real(line)[3 * static_cast<std::size_t>(l.element) + 1] += factor * l.wy;
+        }
+        out.cell_data.push_back(std::move(line));
+    }
 }
 
 } // namespace
@@ -41,6 +52,9 @@ OutputGroup support_and_load_arrays() {
                 {name::support, Where::point, Type::int32, 1, Quantity::none, When::supported, "fixed DOFs: 1 ux + 2 uy + 4 rz"},
                 {name::applied_load, Where::point, Type::float64, 3, Quantity::force, When::loaded, "fx, fy, 0: λ × the reference loads, pressure as it follows the members"},
                 {name::applied_moment, Where::point, Type::float64, 1, Quantity::moment, When::loaded, "λ × the reference moments"},
+                {name::line_load, Where::cell, Type::float64, 3, Quantity::force_per_length, When::line_loads,
+                 "wx, wy, 0: the line load on the element per unit initial length at the step's factors (its nodal shares are in "
+                 "applied_load)"},
             },
             fill_supports_and_loads};
 }

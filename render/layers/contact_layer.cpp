@@ -67,8 +67,7 @@ public:
 
     std::string note() const override {
         if (reference_ >= largest_) return longest_arrow_note(largest_, unit_);
-        return "longest: " + force_text(reference_, unit_) +
-               "\n(largest while the load is in view;\nlonger ones end there, the largest valued)";
+        return "longest " + force_text(reference_, unit_) + "\nlonger ones cut, largest valued";
     }
 
 private:

@@ -21,6 +21,15 @@ bool member_ends(vtkUnstructuredGrid* step, vtkIdType c, double a[3], double b[3
 // The point a share t of the way from one end of a member to the other (end 0: from a).
 void along_member(const double a[3], const double b[3], int end, double t, double& x, double& y);
 
+// Widens box (x min, x max, y min, y max) by `length` on the sides arrows come from (bits of
+// `sides`: 1 left, 2 right, 4 below, 8 above), where their tails lie.
+inline void widen_for_arrows(double box[4], int sides, double length) {
+    if (sides & 1) box[0] -= length;
+    if (sides & 2) box[1] += length;
+    if (sides & 4) box[2] -= length;
+    if (sides & 8) box[3] += length;
+}
+
 struct LayerKind {
     const char* name; // for --hide and --show
     // The layer, or null where the series has nothing of it to draw.

@@ -1,5 +1,6 @@
 #include "arrow_scale.hpp"
 #include "flat_marks.hpp"
+#include "line_load_shares.hpp"
 #include "result_schema.hpp"
 #include "layers/layers.hpp"
 
@@ -22,6 +23,7 @@ struct ArrowKind {
     Rgb colour;
     const char* force_label;
     const char* moment_label;
+    bool takes_off_line_loads; // the applied loads: line loads are drawn along their members
 };
 
 class LoadLayer final : public Layer {
@@ -36,11 +38,7 @@ public:
         // the side the force comes from.
         length_ = 0.12 * size;
         scale_.full_length = length_;
-        const int sides = stats_.sides;
-        if (sides & 1) box[0] -= length_;
-        if (sides & 2) box[1] += length_;
-        if (sides & 4) box[2] -= length_;
-        if (sides & 8) box[3] += length_;
+        widen_for_arrows(box, stats_.sides, length_);
     }
 
     void attach(const ViewGeometry& view, const AddProp& add) override {
@@ -56,12 +54,16 @@ public:
         vtkDataArray* moment = step->GetPointData()->GetArray(kind_.moment_array);
         vtkDataArray* initial = step->GetPointData()->GetArray(result::name::initial_position);
         if (!load || !moment || !initial) return;
+        // Line loads are drawn along their members (line_load_layer.cpp), not at the nodes.
+        const std::vector<double> shares = kind_.takes_off_line_loads ? line_load_shares(step) : std::vector<double>();
         for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
             double p[3];
             step->GetPoint(i, p);
             // A half model carries half of a load on its mirror line: the arrow shows the whole.
             const double whole = on_mirror_line(summary_, initial->GetTuple3(i)) ? 2.0 : 1.0;
-            const double fx = whole * load->GetComponent(i, 0), fy = whole * load->GetComponent(i, 1),
+            const double share_x = shares.empty() ? 0.0 : shares[2 * static_cast<std::size_t>(i)];
+            const double share_y = shares.empty() ? 0.0 : shares[2 * static_cast<std::size_t>(i) + 1];
+            const double fx = whole * (load->GetComponent(i, 0) - share_x), fy = whole * (load->GetComponent(i, 1) - share_y),
                          m = whole * moment->GetComponent(i, 0);
             const double f = std::hypot(fx, fy);
             if (stats_.max_force > 0 && f > 1e-9 * stats_.max_force) {
@@ -82,15 +84,13 @@ public:
 
     std::string note() const override {
         std::string text;
-        if (stats_.max_force > 0) text = "longest: " + force_text(scale_.reference, summary_.force_unit);
+        if (stats_.max_force > 0) text = "longest " + force_text(scale_.reference, summary_.force_unit);
         if (stats_.max_moment > 0)
             text += (text.empty() ? "" : "\n") + std::string("moment ") +
                     force_text(stats_.max_moment, array_unit(summary_, result::name::moment_i));
-        // How arrows off the scale are drawn (ArrowScale), said once under the entry.
-        const bool spikes = scale_.reference < stats_.max_force;
-        if (stats_.max_force <= 0) return text + "\n(largest in the run)";
-        return text + (spikes ? "\n(largest while the load is in view;\nlonger ones end there, valued)"
-                              : "\n(largest in the run;\nunder 30 % drawn at 30 %, valued)");
+        // Arrows off the scale (ArrowScale) are cut at the longest and carry their value.
+        if (stats_.max_force > 0 && scale_.reference < stats_.max_force) text += "\nlonger ones cut, valued";
+        return text;
     }
 
 private:
@@ -137,11 +137,11 @@ private:
 } // namespace
 
 std::unique_ptr<Layer> load_layer(const SeriesSummary& summary) {
-    return std::make_unique<LoadLayer>(summary, summary.loads, summary.load_arrow_reference, ArrowKind{result::name::applied_load, result::name::applied_moment, colour::load, "applied load", "applied moment"});
+    return std::make_unique<LoadLayer>(summary, summary.loads, summary.load_arrow_reference, ArrowKind{result::name::applied_load, result::name::applied_moment, colour::load, "applied load", "applied moment", true});
 }
 
 std::unique_ptr<Layer> reaction_layer(const SeriesSummary& summary) {
-    return std::make_unique<LoadLayer>(summary, summary.reactions, summary.reactions.max_force, ArrowKind{result::name::reaction, result::name::reaction_moment, colour::reaction, "support reaction", "support moment"});
+    return std::make_unique<LoadLayer>(summary, summary.reactions, summary.reactions.max_force, ArrowKind{result::name::reaction, result::name::reaction_moment, colour::reaction, "support reaction", "support moment", false});
 }
 
 // Drawn where the series has loads.
