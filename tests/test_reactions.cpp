@@ -175,7 +175,7 @@ TEST_CASE("curve.csv's base shear is the sum of the supports' x reactions, the s
     }
 }
 
-TEST_CASE("Global end forces balance the loads and reactions at every node", "[reactions]") {
+TEST_CASE("Global end forces balance the loads and reactions at every node and give the documented shear", "[reactions]") {
     // The VTU's end_forces are what the nodes exert on each element: at a node, their sum over the
     // elements meeting there is the load applied there plus the support's reaction.
     const Run r = run_scene(side_loaded_portal());
@@ -198,6 +198,23 @@ TEST_CASE("Global end forces balance the loads and reactions at every node", "[r
             sum[3 * r.model.elements[e].node_i + k] += ends[6 * e + k];
             sum[3 * r.model.elements[e].node_j + k] += ends[6 * e + 3 + k];
         }
+    // The documented shear, (moment_j − moment_i)/L over the current length, is the end forces'
+    // component across the chord; N is their component along it.
+    const std::vector<double>& shear = array(d.cell_data, "shear");
+    const std::vector<double>& axial = array(d.cell_data, "axial_force");
+    const std::vector<double>& mi = array(d.cell_data, "moment_i");
+    const std::vector<double>& mj = array(d.cell_data, "moment_j");
+    const StepResult& last = r.steps.back();
+    for (std::size_t e = 0; e < r.model.elements.size(); ++e) {
+        const ElementSpec& el = r.model.elements[e];
+        const double dx = r.model.nodes[el.node_j].x + last.displacement[3 * el.node_j] - r.model.nodes[el.node_i].x - last.displacement[3 * el.node_i];
+        const double dy = r.model.nodes[el.node_j].y + last.displacement[3 * el.node_j + 1] - r.model.nodes[el.node_i].y - last.displacement[3 * el.node_i + 1];
+        const double L = std::hypot(dx, dy), c = dx / L, s = dy / L;
+        CAPTURE(e);
+        CHECK(shear[e] == Approx((mj[e] - mi[e]) / L).margin(1e-9));
+        CHECK(-ends[6 * e] * s + ends[6 * e + 1] * c == Approx(shear[e]).margin(1e-9));
+        CHECK(-(ends[6 * e] * c + ends[6 * e + 1] * s) == Approx(axial[e]).margin(1e-9));
+    }
     for (std::size_t n = 0; n < r.model.nodes.size(); ++n) {
         CAPTURE(n);
         CHECK(sum[3 * n] == Approx(load[3 * n] + reaction[3 * n]).margin(1e-8));

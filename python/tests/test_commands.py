@@ -131,3 +131,15 @@ def test_compare_gives_each_pictures_verdict(source, tmp_path):
     assert differ["pictures"]["chart.png"]["differing_fraction"] > 0.001
     with pytest.raises(plastica.SceneError, match="size mismatch"):
         plastica.compare(source / "tests/snapshots/ring_inelastic/contact_sheet.png", source / "tests/snapshots/ring_elastic/contact_sheet.png")
+
+
+def test_messages_name_the_key_and_suggest_the_nearest(source):
+    # An override's error begins with the override, as on the command line, and suggests a name.
+    with pytest.raises(plastica.SceneError, match=r"^--set material\[stel\]\.fy: no \[\[material\]\] named 'stel'; did you mean 'steel'\?"):
+        plastica.run(source / "models/ring_inelastic.toml", overrides={"material[stel].fy": 1.0})
+    # A misspelt key is named beside the missing one it stands for.
+    scene = {"scene": {"name": "typo"}, "material": [{"name": "s", "E": 2.1e8, "fy": 3.55e5}],
+             "section": [{"name": "I", "material": "s", "shape": "i", "depth": 0.3, "flange_widht": 0.15,
+                          "flange_thickness": 0.01, "web_thickness": 0.007}]}
+    with pytest.raises(plastica.SceneError, match=r"section\[I\]\.flange_widht: unknown key; did you mean 'flange_width'\? \(missing required key 'flange_width'"):
+        plastica.run(scene)
