@@ -72,11 +72,11 @@ bench: deps
 	build-bench/bench/plastica_bench
 
 # Fuzzes, for FUZZ_SECONDS each, the readers of what comes from outside (clang's libFuzzer, ASan +
-# UBSan): scene files, --set overrides, PNGs given to compare, and result folders given to report
-# and merge. Crashes land in build-fuzz/findings/ and become test cases (tests/test_scene_errors.cpp,
+# UBSan): scene files, --set overrides, PNGs given to compare, result folders given to report
+# and merge, and the step files plastica.open reads. Crashes land in build-fuzz/findings/ and become test cases (tests/test_scene_errors.cpp,
 # tests/test_cli_untrusted.cpp).
 FUZZ_SECONDS ?= 120
-FUZZERS = scene_reader_fuzzer override_fuzzer png_decode_fuzzer result_folder_fuzzer
+FUZZERS = scene_reader_fuzzer override_fuzzer png_decode_fuzzer result_folder_fuzzer vtu_reader_fuzzer
 fuzz:
 	@./scripts/install-deps.sh clang
 	$(call configure,build-fuzz) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
@@ -88,6 +88,7 @@ fuzz:
 	printf 'section[bar].I=2' > build-fuzz/corpus/override_fuzzer/name
 	printf 'scene.title="a title"' > build-fuzz/corpus/override_fuzzer/text
 	cp tests/snapshots/ring_elastic/contact_sheet.png build-fuzz/corpus/png_decode_fuzzer/
+	cp tests/reference/vtu/*.vtu build-fuzz/corpus/vtu_reader_fuzzer/
 	printf '{"program": "plastica", "scene": "ring", "status": "completed", "steps": 2}\0step,load,control_displacement\n0,0,0\n1,1,1\0id,analysis.increment\nr0001,1\n' \
 	  > build-fuzz/corpus/result_folder_fuzzer/seed
 	set -e; for f in $(FUZZERS); do \
