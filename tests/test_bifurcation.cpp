@@ -115,7 +115,11 @@ struct Branch {
 double relative_slope(const std::vector<double>& theta, const std::vector<double>& load) {
     Eigen::MatrixXd A(theta.size(), 3);
     Eigen::VectorXd b(theta.size());
-    for (std::size_t k = 0; k < theta.size(); ++k) A.row(static_cast<Eigen::Index>(k)) << 1.0, theta[k], theta[k] * theta[k], b[static_cast<Eigen::Index>(k)] = load[k];
+    for (std::size_t k = 0; k < theta.size(); ++k) {
+        const auto row = static_cast<Eigen::Index>(k);
+        A.row(row) << 1.0, theta[k], theta[k] * theta[k];
+        b[row] = load[k];
+    }
     const Eigen::Vector3d c = A.colPivHouseholderQr().solve(b);
     return c[1] / c[0];
 }
