@@ -6,9 +6,10 @@ packs it into a wheel with the package's Python files and the `plastica-draw` pr
 command, pictures included), which the module runs for `render`, `section`, `study`, `sweep` and
 `compare`.
 
-Where it builds: PLASTICA_BUILD_DIR (or `--config-settings build-dir=…`) if set, else `build/` of
-the repository, as `make` does. An extension there for another interpreter ABI (another Python
-version, say) leaves it alone and builds in `build-python-<cache tag>/` beside it instead.
+Where it builds: PLASTICA_BUILD_DIR (or `--config-settings build-dir=…`) if set; else `build/` of
+the repository, the one `make` configures, where it holds an extension of this interpreter's ABI
+(a venv of Debian's Python); else `build-python-<cache tag>/` beside it, configured for this
+interpreter, so that `build/` stays make's.
 """
 
 import base64
@@ -59,9 +60,10 @@ def _run(command):
     subprocess.run([str(c) for c in command], check=True, stdout=sys.stderr)
 
 
-def _configure(build, python):
+def _configure(build, python, tests):
     generator = ["-G", "Ninja"] if shutil.which("ninja") and not (build / "CMakeCache.txt").exists() else []
-    _run(["cmake", "-S", _REPOSITORY, "-B", build, *generator, "-DCMAKE_BUILD_TYPE=Release", f"-DPython_EXECUTABLE={python}"])
+    options = [] if tests else ["-DPLASTICA_TESTS=OFF"]
+    _run(["cmake", "-S", _REPOSITORY, "-B", build, *generator, "-DCMAKE_BUILD_TYPE=Release", f"-DPython_EXECUTABLE={python}", *options])
 
 
 def _built_module(build):
@@ -74,17 +76,25 @@ def _build(config_settings):
         raise RuntimeError("pip install ./python builds from the repository: run it from the repository root")
     settings = config_settings or {}
     chosen = settings.get("build-dir") or os.environ.get("PLASTICA_BUILD_DIR")
-    build = Path(chosen).resolve() if chosen else _REPOSITORY / "build"
     targets = ["--target", "_plastica", "plastica-draw"]
     jobs = ["-j", str(os.cpu_count() or 1)]
-    if not (build / "CMakeCache.txt").exists():
-        _configure(build, sys.executable)
-    _run(["cmake", "--build", build, *targets, *jobs])
-    if not _built_module(build).exists():
-        # That build serves another ABI: one of this interpreter's own, beside it.
-        build = build.parent / f"build-python-{sys.implementation.cache_tag}"
-        _configure(build, sys.executable)
+    if chosen:
+        build = Path(chosen).resolve()
+        if not (build / "CMakeCache.txt").exists():
+            _configure(build, sys.executable, tests=False)
         _run(["cmake", "--build", build, *targets, *jobs])
+        if _built_module(build).exists():
+            return build
+    # make's build/ where it serves this interpreter's ABI (a venv of Debian's Python), else a
+    # build of this interpreter's own beside it: build/ stays make's.
+    main = _REPOSITORY / "build"
+    if not chosen and (main / "CMakeCache.txt").exists():
+        _run(["cmake", "--build", main, *targets, *jobs])
+        if _built_module(main).exists():
+            return main
+    build = _REPOSITORY / f"build-python-{sys.implementation.cache_tag}"
+    _configure(build, sys.executable, tests=False)
+    _run(["cmake", "--build", build, *targets, *jobs])
     if not _built_module(build).exists():
         raise RuntimeError(f"the build in {build} made no {_built_module(build).name}")
     return build
