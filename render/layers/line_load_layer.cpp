@@ -1,5 +1,5 @@
-// Line loads drawn along the members they act on: a row of arrows against each loaded element,
-// their tails joined, and each member's intensity written once ("30 kN/m"). The arrows keep the
+// Line loads drawn along the members they act on: a row of arrows against each loaded element
+// between its nodes, their tails joined, and each member's intensity written once ("30 kN/m"). The arrows keep the
 // load's direction; their length is the intensity over the largest in the run.
 #include "arrow_scale.hpp"
 #include "flat_marks.hpp"
@@ -56,18 +56,24 @@ public:
             if (!member_ends(step, c, a, b)) continue;
             const double length = std::max(length_ * w / largest, view_.pixels(10));
             const double ux = wx / w, uy = wy / w;
-            // Tips on the ribbon's edge, at both ends and, on a long element, between them.
+            // Tips on the ribbon's edge between the nodes, never at them: a point load at a node
+            // keeps its own arrow there. The tails' bar runs the element's whole length.
             const double span = std::hypot(b[0] - a[0], b[1] - a[1]);
             const int pieces = std::max(1, static_cast<int>(span / view_.pixels(28)));
-            double previous_tail[2] = {0.0, 0.0};
-            for (int k = 0; k <= pieces; ++k) {
-                const double t = static_cast<double>(k) / pieces;
-                const double tip[2] = {a[0] + t * (b[0] - a[0]) - 0.5 * view_.ribbon_width * ux, a[1] + t * (b[1] - a[1]) - 0.5 * view_.ribbon_width * uy};
-                const double tail[2] = {tip[0] - length * ux, tip[1] - length * uy};
+            const auto tail_at = [&](double t, double tail[2]) {
+                tail[0] = a[0] + t * (b[0] - a[0]) - (0.5 * view_.ribbon_width + length) * ux;
+                tail[1] = a[1] + t * (b[1] - a[1]) - (0.5 * view_.ribbon_width + length) * uy;
+            };
+            for (int k = 0; k < pieces; ++k) {
+                double tail[2];
+                tail_at((k + 0.5) / pieces, tail);
+                const double tip[2] = {tail[0] + length * ux, tail[1] + length * uy};
                 marks_.arrow(tail, tip, view_.pixels(2), colour::load);
-                if (k > 0) marks_.bar(previous_tail, tail, view_.pixels(2), colour::load);
-                previous_tail[0] = tail[0], previous_tail[1] = tail[1];
             }
+            double start[2], end[2];
+            tail_at(0.0, start);
+            tail_at(1.0, end);
+            marks_.bar(start, end, view_.pixels(2), colour::load);
             loaded[member ? static_cast<long>(member->GetComponent(c, 0)) : static_cast<long>(c)].push_back(c);
         }
         for (const auto& [m, cells] : loaded) labelled[m] = cells[cells.size() / 2];
