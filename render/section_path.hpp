@@ -10,7 +10,7 @@
 namespace plastica::render {
 
 struct SectionPath {
-    std::string where; // "element 37, end j"
+    std::string where; // "element 37 (from 0), end j, member 'beam'"
     std::vector<double> axial_force, moment;
 };
 
