@@ -42,7 +42,8 @@ void Progress::update(int count, double done, const std::string& status) {
     }
     line += status;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    if (terminal_ && !unit_.empty() && elapsed > 0.05) {
+    // An early rate is noise; the last one always shows, however quick the run.
+    if (terminal_ && !unit_.empty() && elapsed > 0.0 && (elapsed > 0.05 || done >= 1.0)) {
         char rate[48];
         std::snprintf(rate, sizeof rate, "  %.3g %s/s", count / elapsed, unit_.c_str());
         line += rate;
