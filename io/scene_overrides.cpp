@@ -70,11 +70,15 @@ void check_against_schema(const Override& o, const std::vector<Segment>& segment
     };
     const TableSpec* table = find_scene_table(segments.front().key);
     if (!table) fail(o, "a scene has no table '" + segments.front().key + "'" + suggestion(segments.front().key, scene_table_names()));
-    if (segments.size() != 2) fail(o, "expected " + table->name + (table->array ? "[index or name]" : "") + ".KEY");
+    // A key of a table inside a key (a section's slab.width, rebars[2].area) is checked by the
+    // reader of that table.
+    const KeySpec* holder = segments.size() == 3 ? table->find_anywhere(segments[1].key) : nullptr;
+    const bool nested = holder && holder->kind == ValueKind::other;
+    if (segments.size() != 2 && !nested) fail(o, "expected " + table->name + (table->array ? "[index or name]" : "") + ".KEY");
     if (table->array && !segments.front().indexed)
         fail(o, "'" + table->name + "' is a list: name one, e.g. " + table->name + "[1]." + segments.back().key);
     if (!table->array && segments.front().indexed) fail(o, "[" + table->name + "] is one table, not a list");
-    if (!table->find_anywhere(segments.back().key))
+    if (!nested && !table->find_anywhere(segments.back().key))
         fail(o, table->heading() + " has no key '" + segments.back().key + "'" + suggestion(segments.back().key, table->all_key_names()));
 }
 

@@ -179,8 +179,9 @@ TableSpec material_table_spec() {
     for (const MaterialLaw& law : material_laws()) laws.push_back(law.name);
     TableSpec t{"material", true, "law", {
         text("name").needed().about("referenced by sections"),
-        number("E", dimension::stress).positive().needed().about("Young's modulus"),
-        number("fy", dimension::stress).positive().about("yield stress: makes the material inelastic (fibre sections)"),
+        number("E", dimension::stress).positive().follows("needed; `concrete`: n·fc/eps_c2")
+            .about("Young's modulus; for `concrete` the parabola's initial slope (it sets n = E·eps_c2/fc)"),
+        number("fy", dimension::stress).positive().about("yield stress: makes the material inelastic (fibre sections); `concrete` has `fc`"),
         one_of("law", laws).fallback(std::string("bilinear"))
             .about("the fibres' law (with `fy`). `bilinear`: elastic–perfectly plastic, the CS-ASA paper's law. "
                    "`kinematic_hardening`: bilinear with linear kinematic hardening (OpenSees' Steel01): tangent b·E past yield, "
@@ -196,7 +197,10 @@ TableSpec material_table_spec() {
     }};
     for (const MaterialLaw& law : material_laws())
         for (const LawParameter& p : law.parameters) {
-            KeySpec k = number(p.name).needed().of(law.name).about(std::string("`") + law.name + "` only: " + p.doc);
+            KeySpec k = number(p.name, p.stress ? dimension::stress : dimension::none).of(law.name)
+                            .about(std::string("`") + law.name + "` only: " + p.doc);
+            if (std::isfinite(p.fallback)) k.fallback(p.fallback);
+            else k.needed();
             k.range.min = p.min;
             k.range.max = p.max;
             k.range.max_open = true;
@@ -237,11 +241,26 @@ TableSpec section_table_spec() {
         whole("web_fibres", 1, 10000).fallback(10.0).of("i").about("`i`: fibres along the web"),
         number("residual_stress").at_least(0.0).below(1.0).fallback(0.0).of("i")
             .about("`i`: a fraction of fy; linear pattern across the flanges, −r·fy at the tips, +r·fy at the web, zero mean"),
+        other("slab", "table").of("i")
+            .about("`i`: a slab on the top flange for a composite beam (full interaction), `{ width, thickness, material, layers = 10 }`; "
+                   "the section is centred on its elastic centroid"),
         number("diameter", dimension::length).positive().needed().of("hollow_circle").about("`hollow_circle`: outer diameter"),
         number("thickness", dimension::length).positive().needed().of("hollow_circle").about("`hollow_circle`: wall, at most half the diameter"),
         whole("fibres", 4, 100000).fallback(24.0).of("hollow_circle").varied_in_studies().about("`hollow_circle`: fibres round the wall"),
+        text("core_material").of("hollow_circle").about("`hollow_circle`: a `[[material]]` filling the tube (a concrete-filled tube)"),
+        whole("core_fibres", 2, 100000).fallback(20.0).of("hollow_circle").about("`hollow_circle` with `core_material`: layers of the core"),
+        number("b", dimension::length).positive().needed().of("hollow_rectangle").about("`hollow_rectangle`: outer width"),
+        number("h", dimension::length).positive().needed().of("hollow_rectangle").about("`hollow_rectangle`: outer depth"),
+        number("thickness", dimension::length).positive().needed().of("hollow_rectangle").about("`hollow_rectangle`: wall"),
+        whole("fibres", 1, 100000).fallback(20.0).of("hollow_rectangle").varied_in_studies()
+            .about("`hollow_rectangle`: layers along the webs (and the core)"),
+        whole("flange_layers", 1, 1000).fallback(2.0).of("hollow_rectangle").about("`hollow_rectangle`: layers through each flange"),
+        text("core_material").of("hollow_rectangle").about("`hollow_rectangle`: a `[[material]]` filling the tube"),
         other("fibres", "list of `[area, y]` or `[area, y, residual_stress]`").needed().of("fibres")
             .about("`fibres`: y from the centroid (Σ A·y = 0)"),
+        other("rebars", "list of tables")
+            .about("any shape: bars as point fibres, `[{ y, area, material }, …]`, y from the shape's centre; the layer a bar "
+                   "lies in gives up the bar's area (the concrete it displaces is not counted twice)"),
         one_of("plasticity", {"none", "hinges", "distributed"})
             .follows("`\"hinges\"` with `fy` (`\"distributed\"` for a hardening law), else `\"none\"`")
             .about("how an inelastic section yields. `hinges`: refined plastic hinges at element ends (pseudo-springs from the "

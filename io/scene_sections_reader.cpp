@@ -37,27 +37,45 @@ void SceneBuilder::read_materials(TomlTableReader& top) {
         const std::string name = r.string("name");
         if (materials_.count(name)) r.fail("name", "a material named '" + name + "' exists already");
         Material m;
-        m.E = r.number("E");
         m.density = r.number("density");
-        if (r.has("fy")) {
+        if (r.has("fy") || r.has("law")) {
             SteelSpec s;
-            s.E = m.E;
-            s.fy = r.number("fy");
-            s.ultimate_strain = r.number("ultimate_strain");
-            if (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E)
-                r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
             // The law and the keys of its own, as the registry lists them.
             s.law = r.choice("law");
             r.choose_group(s.law);
-            for (const LawParameter& p : find_material_law(s.law)->parameters) s.parameters[p.name] = r.number(p.name);
+            const MaterialLaw& law = *find_material_law(s.law);
+            for (const LawParameter& p : law.parameters) s.parameters[p.name] = r.number(p.name);
+            if (std::string(law.strength) == "fy") {
+                if (!r.has("fy")) r.fail("law", "a material law needs a yield stress 'fy'");
+                s.E = r.number("E");
+                s.fy = r.number("fy");
+            } else {
+                // A strength of its own (concrete's fc): E, when given, is the initial slope.
+                if (r.has("fy")) r.fail("fy", "a " + s.law + " material's strength is '" + law.strength + "'");
+                s.fy = s.parameters.at(law.strength);
+                if (r.has("E")) {
+                    if (r.has("n")) r.fail("n", "E sets n = E·eps_c2/fc: give one of them");
+                    s.E = r.number("E");
+                    s.parameters["n"] = s.E * s.parameters.at("eps_c2") / s.fy;
+                    if (s.parameters["n"] < 1.0) r.fail("E", "expected at least fc/eps_c2 (a parabola of exponent n ≥ 1)");
+                } else {
+                    s.E = s.parameters.at("n") * s.fy / s.parameters.at("eps_c2");
+                }
+            }
+            s.ultimate_strain = r.number("ultimate_strain");
+            if (s.ultimate_strain > 0.0 && std::string(law.strength) != "fy")
+                r.fail("ultimate_strain", "a " + s.law + " material's strain limit is eps_cu2");
+            if (s.ultimate_strain > 0.0 && s.ultimate_strain <= s.fy / s.E)
+                r.fail("ultimate_strain", "expected 0 (never fails) or a strain above fy/E");
             try {
                 make_material(s, 0.0);
             } catch (const MaterialParameterError& e) {
                 r.fail(e.key, e.what());
             }
+            m.E = s.E;
             m.steel = s;
-        } else if (r.has("law")) {
-            r.fail("law", "a material law needs a yield stress 'fy'");
+        } else {
+            m.E = r.number("E");
         }
         r.finish();
         materials_[name] = m;
@@ -75,7 +93,18 @@ void SceneBuilder::read_sections(TomlTableReader& top) {
         auto m = materials_.find(material);
         if (m == materials_.end()) r.fail("material", "no [[material]] named '" + material + "'");
         const SectionShape& shape = read_section_shape(r);
-        SectionSpec s = shape.build(r, {m->second.E, m->second.steel});
+        // Parts of other materials (rebars, a core, a slab) name them by key.
+        const MaterialLookup lookup = [&](TomlTableReader& table, const std::string& key) {
+            const std::string other = table.string(key);
+            const auto found = materials_.find(other);
+            if (found == materials_.end()) table.fail(key, "no [[material]] named '" + other + "'");
+            return ShapeMaterial{found->second.E, found->second.steel};
+        };
+        SectionParts parts({m->second.E, m->second.steel}, lookup);
+        shape.build(r, parts);
+        parts.read_rebars(r);
+        parts.finish();
+        SectionSpec s = std::move(parts.spec());
         if (r.has("plastic"))
             r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
         // Hinges by default for an inelastic material, unless its law hardens: a plastic
@@ -117,6 +146,13 @@ void SceneBuilder::read_sections(TomlTableReader& top) {
         }
         if (s.plasticity != Plasticity::none) s.steel = m->second.steel;
         else s.fibres.clear();
+        // A capacity needs some tensile strength: a steel's fy (concrete's ft cracks away).
+        const bool carries_tension = std::any_of(s.fibres.begin(), s.fibres.end(), [&](const Fibre& f) {
+            const SteelSpec& law = f.material == 0 ? *s.steel : s.other_materials[static_cast<std::size_t>(f.material - 1)];
+            return find_material_law(law.law)->strength == std::string("fy");
+        });
+        if (s.plasticity != Plasticity::none && !carries_tension)
+            r.fail("material", "a section of concrete alone carries no tension: give it `rebars`, or make it elastic with plasticity = \"none\"");
         s.name = name;
         s.mass_per_length = m->second.density * s.area;
         s.rotary_inertia_per_length = m->second.density * s.inertia;

@@ -40,16 +40,17 @@ std::vector<std::string> scene_warnings(const Model& model) {
             warnings.push_back("section '" + s.name + "': its material's fy/E is " + warning_number(ratio) +
                                ", outside 1e-5 … 2e-2 (steels lie near 1e-3): are E and fy in the same units?");
     }
-    // A section deeper than a tenth of the whole structure: a depth in millimetres on members in
-    // metres, or a beam theory past its reach.
+    // A section deeper than a quarter of the whole structure: a depth in millimetres on members in
+    // metres (a thousand times too deep), or a beam theory past its reach. A stocky column, 500
+    // deep and 3000 tall, is neither.
     double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
     for (const Node& n : model.nodes) lo_x = std::min(lo_x, n.x), hi_x = std::max(hi_x, n.x), lo_y = std::min(lo_y, n.y), hi_y = std::max(hi_y, n.y);
     const double extent = model.nodes.empty() ? 0.0 : std::hypot(hi_x - lo_x, hi_y - lo_y);
     for (const SectionSpec& s : model.sections) {
         const double depth = section_depth(s);
-        if (extent > 0.0 && depth > 0.1 * extent)
+        if (extent > 0.0 && depth > 0.25 * extent)
             warnings.push_back("section '" + s.name + "': " + warning_number(depth) + " deep on a structure " + warning_number(extent) +
-                               " across, more than a tenth of it: are the section and the geometry in the same length unit?");
+                               " across, more than a quarter of it: are the section and the geometry in the same length unit?");
     }
     // A spring whose stiffness dwarfs every element's axial stiffness EA/L: its penalty sets
     // the round-off floor of the residual (1e6 × leaves it near 1e-10 of the load).

@@ -13,15 +13,16 @@ SectionSpec rectangle_section(double E, double b, double h, int fibres) {
     s.area = b * h;
     s.inertia = b * h * h * h / 12.0;
     for (int i = 0; i < fibres; ++i)
-        s.fibres.push_back({b * h / fibres, -h / 2.0 + (i + 0.5) * h / fibres, 0.0});
+        s.fibres.push_back({b * h / fibres, -h / 2.0 + (i + 0.5) * h / fibres, 0.0, 0, h / (2.0 * fibres)});
     return s;
 }
 
 namespace {
 
 // A and I; an inelastic material's fibres in the equivalent rectangle.
-SectionSpec properties(TomlTableReader& t, const ShapeMaterial& m) {
-    SectionSpec s;
+void properties(TomlTableReader& t, SectionParts& parts) {
+    SectionSpec& s = parts.spec();
+    const ShapeMaterial& m = parts.main();
     s.E = m.E;
     s.area = t.number("A");
     s.inertia = t.number("I");
@@ -31,22 +32,75 @@ SectionSpec properties(TomlTableReader& t, const ShapeMaterial& m) {
         const double h = std::sqrt(12.0 * s.inertia / s.area);
         s.fibres = rectangle_section(s.E, s.area / h, h, t.integer("fibres")).fibres;
     }
-    return s;
 }
 
-SectionSpec rectangle(TomlTableReader& t, const ShapeMaterial& m) {
+void rectangle(TomlTableReader& t, SectionParts& parts) {
     const double b = t.number("b");
     const double h = t.number("h");
-    SectionSpec s = rectangle_section(m.E, b, h, t.integer("fibres"));
+    SectionSpec& s = parts.spec();
+    s = rectangle_section(parts.main().E, b, h, t.integer("fibres"));
     s.depth = h;
-    return s;
+}
+
+// A rectangular tube B × H with walls of `thickness`: flanges in layers through their thickness,
+// the two webs in `fibres` layers along their height; with `core_material` the core B − 2t by
+// H − 2t filled (a concrete-filled tube) in the same layers.
+void hollow_rectangle(TomlTableReader& t, SectionParts& parts) {
+    const double B = t.number("b"), H = t.number("h"), th = t.number("thickness");
+    if (2.0 * th >= std::min(B, H)) t.fail("thickness", "expected less than half the width and the depth");
+    const int n = t.integer("fibres"), flange_layers = t.integer("flange_layers");
+    SectionSpec& s = parts.spec();
+    s.E = parts.main().E;
+    const double hw = H - 2.0 * th, bi = B - 2.0 * th;
+    s.area = B * H - bi * hw;
+    s.inertia = (B * H * H * H - bi * hw * hw * hw) / 12.0;
+    s.depth = H;
+    for (int side : {-1, 1})
+        for (int l = 0; l < flange_layers; ++l)
+            s.fibres.push_back({B * th / flange_layers, side * (hw / 2.0 + (l + 0.5) * th / flange_layers), 0.0, 0, th / (2.0 * flange_layers)});
+    for (int k = 0; k < n; ++k) s.fibres.push_back({2.0 * th * hw / n, -hw / 2.0 + (k + 0.5) * hw / n, 0.0, 0, hw / (2.0 * n)});
+    if (t.has("core_material")) {
+        double E = 0.0;
+        const int core = parts.material(t, "core_material", E);
+        parts.add_stiffness(E, bi * hw, 0.0, bi * hw * hw * hw / 12.0);
+        if (parts.main().steel)
+            for (int k = 0; k < n; ++k) s.fibres.push_back({bi * hw / n, -hw / 2.0 + (k + 0.5) * hw / n, 0.0, core, hw / (2.0 * n)});
+    }
+}
+
+const TableSpec& slab_spec() {
+    static const TableSpec spec{"slab", false, "", {
+        number("width", dimension::length).positive().needed().about("effective width"),
+        number("thickness", dimension::length).positive().needed().about("depth of the slab"),
+        text("material").needed().about("a `[[material]]`'s name"),
+        whole("layers", 1, 1000).fallback(10.0).about("fibres through the thickness"),
+    }};
+    return spec;
+}
+
+// A slab on the top flange (a composite beam): full interaction, its layers from `top` up.
+void read_slab(TomlTableReader& t, SectionParts& parts, double top) {
+    const toml::table* table = t.table("slab");
+    if (!table) t.fail("slab", "expected a table { width = …, thickness = …, material = \"…\" }");
+    TomlTableReader r(*table, t.file(), t.qualified("slab"), slab_spec(), t.units());
+    const double b = r.number("width"), h = r.number("thickness");
+    const int layers = r.integer("layers");
+    double E = 0.0;
+    const int material = parts.material(r, "material", E);
+    r.finish();
+    parts.add_stiffness(E, b * h, top + h / 2.0, b * h * h * h / 12.0);
+    SectionSpec& s = parts.spec();
+    s.depth += h;
+    if (parts.main().steel)
+        for (int l = 0; l < layers; ++l) s.fibres.push_back({b * h / layers, top + (l + 0.5) * h / layers, 0.0, material, h / (2.0 * layers)});
 }
 
 // I or H section: flanges split into strips across the width and layers through the
 // thickness (so a residual-stress pattern across the flange is represented), web in layers,
 // and with a root radius r the four fillets between web and flanges, each (1 − π/4)·r² with its
 // centroid 0.2234·r from the flange (a rolled section's tabulated A, I and W_pl).
-SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
+void i_section(TomlTableReader& t, SectionParts& parts) {
+    const ShapeMaterial& m = parts.main();
     const double d = t.number("depth");
     const double bf = t.number("flange_width");
     const double tf = t.number("flange_thickness");
@@ -63,7 +117,7 @@ SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
         t.fail("root_radius", "expected a radius ≥ 0 whose fillets fit between the flanges and within their width");
     const double fillet_area = (1.0 - M_PI / 4.0) * r * r, fillet_y = hw / 2.0 - 0.2234 * r;
     const double fillet_own_inertia = 0.0075 * r * r * r * r; // a spandrel's about its own centroid
-    SectionSpec s;
+    SectionSpec& s = parts.spec();
     s.E = m.E;
     s.area = 2.0 * bf * tf + hw * tw + 4.0 * fillet_area;
     s.inertia = (bf * d * d * d - (bf - tw) * hw * hw * hw) / 12.0 + 4.0 * (fillet_area * fillet_y * fillet_y + fillet_own_inertia);
@@ -77,36 +131,49 @@ SectionSpec i_section(TomlTableReader& t, const ShapeMaterial& m) {
                 // zero mean over the flange so that the section stays in equilibrium.
                 const double x = -bf / 2.0 + (k + 0.5) * bf / strips;
                 const double sigma = ratio * fy * (1.0 - 4.0 * std::abs(x) / bf);
-                s.fibres.push_back({bf * tf / (strips * layers), y, sigma});
+                s.fibres.push_back({bf * tf / (strips * layers), y, sigma, 0, tf / (2.0 * layers)});
             }
         }
     for (int k = 0; k < web; ++k)
-        s.fibres.push_back({hw * tw / web, -hw / 2.0 + (k + 0.5) * hw / web, 0.0});
+        s.fibres.push_back({hw * tw / web, -hw / 2.0 + (k + 0.5) * hw / web, 0.0, 0, hw / (2.0 * web)});
     if (r > 0.0)
-        for (int side : {-1, 1}) s.fibres.push_back({2.0 * fillet_area, side * fillet_y, 0.0});
-    return s;
+        for (int side : {-1, 1}) s.fibres.push_back({2.0 * fillet_area, side * fillet_y, 0.0, 0, 0.2234 * r});
+    if (t.has("slab")) read_slab(t, parts, d / 2.0);
 }
 
-SectionSpec hollow_circle(TomlTableReader& t, const ShapeMaterial& m) {
+void hollow_circle(TomlTableReader& t, SectionParts& parts) {
     const double D = t.number("diameter");
     const double th = t.number("thickness");
     if (2.0 * th > D) t.fail("thickness", "expected at most half the diameter");
     const int n = t.integer("fibres");
-    SectionSpec s;
-    s.E = m.E;
+    SectionSpec& s = parts.spec();
+    s.E = parts.main().E;
     const double d = D - 2.0 * th;
     s.area = M_PI * (D * D - d * d) / 4.0;
     s.inertia = M_PI * (D * D * D * D - d * d * d * d) / 64.0;
     s.depth = D;
-    const double rm = (D - th) / 2.0;
-    for (int k = 0; k < n; ++k) s.fibres.push_back({s.area / n, rm * std::sin(2.0 * M_PI * (k + 0.5) / n), 0.0});
-    return s;
+    const double rm = (D - th) / 2.0, step = 2.0 * M_PI / n;
+    for (int k = 0; k < n; ++k) {
+        // At mid-wall; its edge reaches the outer face's highest point over the fibre's arc.
+        const double angle = step * (k + 0.5), y = rm * std::sin(angle);
+        const double lo = angle - step / 2.0, hi = angle + step / 2.0;
+        const bool crest = std::cos(lo) * std::cos(hi) <= 0.0; // the arc holds the top or the bottom
+        const double outer = D / 2.0 * (crest ? 1.0 : std::max(std::abs(std::sin(lo)), std::abs(std::sin(hi))));
+        s.fibres.push_back({s.area / n, y, 0.0, 0, outer - std::abs(y)});
+    }
+    if (t.has("core_material")) {
+        double E = 0.0;
+        const int core = parts.material(t, "core_material", E);
+        parts.add_stiffness(E, M_PI * d * d / 4.0, 0.0, M_PI * d * d * d * d / 64.0);
+        if (parts.main().steel)
+            for (const Fibre& f : disc_layers(d / 2.0, t.integer("core_fibres"), core)) s.fibres.push_back(f);
+    }
 }
 
 // Fibres given one by one, [area, y] or [area, y, residual_stress], y from the centroid.
-SectionSpec explicit_fibres(TomlTableReader& t, const ShapeMaterial& m) {
-    SectionSpec s;
-    s.E = m.E;
+void explicit_fibres(TomlTableReader& t, SectionParts& parts) {
+    SectionSpec& s = parts.spec();
+    s.E = parts.main().E;
     const toml::array* a = t.array("fibres");
     if (!a || a->empty()) t.fail("fibres", "expected a list of [area, y] or [area, y, residual_stress]");
     for (const toml::node& f : *a) {
@@ -129,7 +196,6 @@ SectionSpec explicit_fibres(TomlTableReader& t, const ShapeMaterial& m) {
     s.area = A;
     s.inertia = I;
     if (!(I > 0.0)) t.fail("fibres", "the fibres give no bending stiffness");
-    return s;
 }
 
 } // namespace
@@ -140,6 +206,7 @@ const std::vector<SectionShape>& section_shapes() {
         {"rectangle", rectangle},
         {"i", i_section},
         {"hollow_circle", hollow_circle},
+        {"hollow_rectangle", hollow_rectangle},
         {"fibres", explicit_fibres},
     };
     return shapes;

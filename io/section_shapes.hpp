@@ -4,6 +4,7 @@
 #pragma once
 
 #include "model/model.hpp"
+#include "section_parts.hpp"
 #include "toml_table_reader.hpp"
 
 #include <optional>
@@ -12,15 +13,10 @@
 
 namespace plastica {
 
-// What a shape takes from its material.
-struct ShapeMaterial {
-    double E = 0.0;
-    std::optional<SteelSpec> steel; // fibres only for an inelastic material (their residual stresses read fy)
-};
-
 struct SectionShape {
     std::string name;
-    SectionSpec (*build)(TomlTableReader& table, const ShapeMaterial& material);
+    // Fills parts.spec(): A and I of its own material about its centre y = 0, and the fibres.
+    void (*build)(TomlTableReader& table, SectionParts& parts);
 };
 
 const std::vector<SectionShape>& section_shapes();

@@ -204,7 +204,7 @@ TEST_CASE("plastica schema --scene prints the key tables models/README.md carrie
         ++blocks;
     }
     CHECK(blocks == 23u);
-    CHECK_THAT(r.output, Catch::Contains("| `E` | number > 0, a stress, force/length² | required | Young's modulus |"));
+    CHECK_THAT(r.output, Catch::Contains("| `E` | number > 0, a stress, force/length² | needed; `concrete`: n·fc/eps_c2 | Young's modulus;"));
 }
 
 TEST_CASE("An analysis that stops early exits with 3 and keeps its converged steps", "[cli]") {
@@ -253,9 +253,9 @@ TEST_CASE("plastica section writes the capacity and moment-curvature curves", "[
     CHECK(capacity.at(middle, "axial_force") == Approx(0.0).margin(1e-9));
     CHECK(capacity.at(middle, "moment_positive") == Approx(Mp).epsilon(1e-9));
     CHECK(capacity.at(middle, "moment_negative") == Approx(-Mp).epsilon(1e-9));
-    // First yield at the outer layer's centre (0.9 h/2) of layers whose I is (1 − 1/n²) of
-    // the rectangle's: 0.99 fy I / (0.9 h/2).
-    CHECK(capacity.at(middle, "first_yield_moment") == Approx(0.99 * 36518.0 * 1e-6 / (0.9 * h / 2.0)).epsilon(1e-9));
+    // First yield at the outer face (h/2) of layers whose I is (1 − 1/n²) of the rectangle's:
+    // 0.99 fy I / (h/2).
+    CHECK(capacity.at(middle, "first_yield_moment") == Approx(0.99 * 36518.0 * 1e-6 / (h / 2.0)).epsilon(1e-9));
     // At the squash loads no moment is left.
     CHECK(capacity.at(0, "moment_positive") == Approx(0.0).margin(1e-9));
     CHECK(capacity.at(100, "moment_positive") == Approx(0.0).margin(1e-9));

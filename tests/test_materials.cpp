@@ -84,15 +84,21 @@ TEST_CASE("The registry makes every law it lists and names what is wrong", "[mat
     for (const MaterialLaw& law : material_laws()) {
         SteelSpec s = bilinear_steel(E, fy);
         s.law = law.name;
-        for (const LawParameter& p : law.parameters) s.parameters[p.name] = 0.01;
+        for (const LawParameter& p : law.parameters) s.parameters[p.name] = std::isfinite(p.fallback) ? p.fallback : p.stress ? fy : 0.01;
         auto m = make_material(s, 0.0);
         CAPTURE(law.name);
-        CHECK(m->elastic_modulus() == E);
-        CHECK(m->limit_stress(1.0) == fy);
-        CHECK(m->set_trial_strain(0.5 * ey).stress == Approx(0.5 * fy));
+        // Steels are linear to fy in both senses; concrete's strength fc is its compressive limit.
+        if (std::string(law.strength) == "fy") {
+            CHECK(m->elastic_modulus() == E);
+            CHECK(m->limit_stress(1.0) == fy);
+            CHECK(m->set_trial_strain(0.5 * ey).stress == Approx(0.5 * fy));
+        } else {
+            CHECK(m->limit_stress(-1.0) == fy);
+            CHECK(m->set_trial_strain(-1.0).stress == Approx(-fy));
+        }
     }
     SteelSpec unknown = bilinear_steel(E, fy);
-    unknown.law = "concrete";
+    unknown.law = "timber";
     CHECK_THROWS_AS(make_material(unknown, 0.0), MaterialParameterError);
     try {
         make_material(hardening(1.5), 0.0);

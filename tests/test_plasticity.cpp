@@ -110,7 +110,7 @@ TEST_CASE("The inelastic ring reaches a top displacement of 100 with every step 
         double largest = 0.0;
         for (const ElementResult& e : s.elements)
             largest = std::max(largest, std::max(std::abs(e.forces.moment_i), std::abs(e.forces.moment_j)) /
-                                            section.first_yield_moment(e.forces.axial));
+                                            section.first_fibre_yield_moment(e.forces.axial));
         return largest;
     };
     auto first_hinge = std::find_if(r.steps.begin(), r.steps.end(), [](const StepResult& s) { return s.hinge_count > 0; });

@@ -29,6 +29,12 @@ public:
     double limit_stress(double) const override { return fy_; }
     double elastic_modulus() const override { return E_; }
 
+    StrainLimits strain_limits() const override {
+        StrainLimits limits;
+        if (eu_ > 0.0) limits.tension = eu_;
+        return limits;
+    }
+
     void commit() override { committed_ = trial_; }
     void revert() override { trial_ = committed_; }
 

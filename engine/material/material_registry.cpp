@@ -1,6 +1,7 @@
 #include "material/material_registry.hpp"
 
 #include "material/bilinear_steel.hpp"
+#include "material/concrete.hpp"
 #include "material/kinematic_hardening_steel.hpp"
 
 namespace plastica {
@@ -22,6 +23,15 @@ const std::vector<MaterialLaw>& material_laws() {
            "b = E_sh/E; fibre sections crushed far into the plastic range (a ring between plates) need some "
            "hardening: with b = 1e-4 they reach 65 % of the diameter, perfectly plastic fibres stop far earlier"}}, "bilinear with linear kinematic hardening (tangent b·E past yield, Bauschinger effect)",
          make<KinematicHardeningSteel>, false},
+        {"concrete",
+         {{"fc", 0.0, HUGE_VAL, "compressive strength (a positive number); the material's strength in place of fy", HUGE_VAL, true},
+          {"eps_c2", 1e-4, 0.02, "strain at which the parabola reaches fc (EN 1992-1-1: 0.002 up to C50/60)", 0.002},
+          {"eps_cu2", 1e-4, 0.05, "design strain limit of a bent section's compressed face; past it the stress stays fc", 0.0035},
+          {"n", 1.0, 10.0, "the parabola's exponent; the initial slope is n·fc/eps_c2 (giving E sets n = E·eps_c2/fc)", 2.0},
+          {"ft", 0.0, HUGE_VAL, "tensile strength; 0: no tension", 0.0, true},
+          {"eps_tu", 0.0, 1.0, "with ft: the strain beyond the unloading point where tension has softened linearly to zero", 0.001}},
+         "EN 1992-1-1's parabola–rectangle with Karsan–Jirsa unloading (OpenSees' Concrete01), no tension unless ft",
+         make<Concrete>, false, "fc"},
     };
     return laws;
 }

@@ -5,6 +5,7 @@
 #include "material/uniaxial_material.hpp"
 #include "model/model.hpp"
 
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,8 @@ struct LawParameter {
     std::string name;
     double min, max;
     const char* doc;
+    double fallback = HUGE_VAL; // HUGE_VAL: the key is needed
+    bool stress = false;        // a stress (units apply), else a plain number
 };
 
 struct MaterialLaw {
@@ -35,6 +38,8 @@ struct MaterialLaw {
     // Whether the moment of its sections stops at the fully plastic capacity (its sections then
     // default to refined plastic hinges, else to a plastic zone).
     bool perfectly_plastic;
+    // The key of its strength (SteelSpec::fy): `fy`, or one of its parameters (concrete's `fc`).
+    const char* strength = "fy";
 };
 
 const std::vector<MaterialLaw>& material_laws();

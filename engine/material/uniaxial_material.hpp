@@ -5,6 +5,7 @@
 // called directly (one virtual call per section, not per fibre).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 
@@ -50,6 +51,15 @@ public:
     // the section's capacity N–M is built from these.
     virtual double limit_stress(double sign) const = 0;
     virtual double elastic_modulus() const = 0;
+    // The strain limits of section design (EN 1992-1-1 §3.1.7, §6.1), as magnitudes: a bent
+    // section's compressed face (εcu2), a wholly compressed section's strain (εc2), and the
+    // tensile limit (εud). Infinity where the law sets none: steel without `ultimate_strain`.
+    struct StrainLimits {
+        double bending_compression = HUGE_VAL;
+        double uniform_compression = HUGE_VAL;
+        double tension = HUGE_VAL;
+    };
+    virtual StrainLimits strain_limits() const { return {}; }
 
     virtual void commit() = 0;
     virtual void revert() = 0;
@@ -91,6 +101,7 @@ struct SectionFibre {
     double limit_compression;
     double residual_stress;
     MaterialHolder material;
+    double extent = 0.0; // half the fibre's height: its edges at y ± extent
 };
 
 // The base of each law: the section's loop over fibres, with the law's own update called

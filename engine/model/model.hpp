@@ -44,6 +44,8 @@ struct Fibre {
     double area = 0.0;
     double y = 0.0;                 // distance from the reference axis, local +y side
     double residual_stress = 0.0;   // initial stress (ECCS patterns and the like)
+    int material = 0;               // 0: the section's material; k ≥ 1: SectionSpec::other_materials[k − 1]
+    double extent = 0.0;            // half the fibre's height in y: where its outer edge lies (first yield, strain limits)
 };
 
 // How an inelastic section's plasticity is modelled along a member.
@@ -70,7 +72,8 @@ struct SectionSpec {
     double E = 0.0;
     double area = 0.0;
     double inertia = 0.0;
-    std::optional<SteelSpec> steel; // present: inelastic section with fibres
+    std::optional<SteelSpec> steel; // present: inelastic section with fibres (of this material unless they name another)
+    std::vector<SteelSpec> other_materials; // the laws of rebars, a tube's core, a slab (Fibre::material ≥ 1)
     std::vector<Fibre> fibres;      // filled when steel is present
     Plasticity plasticity = Plasticity::none; // hinges or distributed when steel is present
     Formulation formulation = Formulation::displacement; // distributed

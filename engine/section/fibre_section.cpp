@@ -1,6 +1,7 @@
 #include "section/fibre_section.hpp"
 
 #include "material/material_registry.hpp"
+#include "section/strain_limit_capacity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,25 +12,47 @@ namespace plastica {
 
 
 FibreSection::FibreSection(const SectionSpec& spec) : spec_(spec) {
-    const SteelSpec& steel = *spec.steel;
-    E_ = steel.E;
-    // Stiffness and capacity from each fibre's own material.
+    // Fibres of one law side by side (in their order otherwise), so that each law's loop runs
+    // over a contiguous run of them.
+    std::vector<std::size_t> order(spec.fibres.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return spec.fibres[a].material < spec.fibres[b].material; });
     fibres_.reserve(spec.fibres.size());
-    for (const Fibre& f : spec.fibres) {
-        MaterialHolder material(make_material(steel, f.residual_stress));
+    int group_material = -1;
+    for (std::size_t index : order) {
+        const Fibre& f = spec.fibres[index];
+        const SteelSpec& law = f.material == 0 ? *spec.steel : spec.other_materials.at(static_cast<std::size_t>(f.material - 1));
+        MaterialHolder material(make_material(law, f.residual_stress));
         const double E = material->elastic_modulus();
-        fibres_.push_back({f.area, f.y, material->limit_stress(1.0), material->limit_stress(-1.0), f.residual_stress, std::move(material)});
+        if (f.material != group_material) {
+            groups_.push_back(fibres_.size());
+            group_material = f.material;
+        }
+        fibres_.push_back({f.area, f.y, material->limit_stress(1.0), material->limit_stress(-1.0), f.residual_stress, std::move(material), f.extent});
         ea0_ += E * f.area;
         ei0_ += E * f.area * f.y * f.y;
         ny_tension_ += fibres_.back().limit_tension * f.area;
         ny_compression_ += fibres_.back().limit_compression * f.area;
     }
+    groups_.push_back(fibres_.size());
     std::vector<CapacityFibre> limits;
     limits.reserve(fibres_.size());
     for (const SectionFibre& f : fibres_) limits.push_back({f.area, f.y, f.limit_tension, f.limit_compression});
     capacity_ = section_capacity(limits);
-    force_scale_ = ny_tension_;
+    // Sections with a design strain limit (concrete) yield as hinges at their capacity by strain limits.
+    if (has_strain_limits()) strain_limit_hinge_ = strain_limit_capacity(*this);
+    force_scale_ = std::max(ny_tension_, ny_compression_);
     moment_scale_ = std::max(moment_capacity(0.0, 1.0), moment_capacity(0.0, -1.0));
+}
+
+bool FibreSection::has_strain_limits() const {
+    return std::any_of(fibres_.begin(), fibres_.end(),
+                       [](const SectionFibre& f) { return std::isfinite(f.material->strain_limits().bending_compression); });
+}
+
+const CapacityCurve& FibreSection::hinge_capacity(double sign) const {
+    const int side = sign > 0.0 ? 0 : 1;
+    return strain_limit_hinge_ ? strain_limit_hinge_->hinge[side] : capacity_->hinge[side];
 }
 
 SectionResponse FibreSection::set_trial_deformation(double eps0, double curvature) {
@@ -50,7 +73,16 @@ SectionResponse FibreSection::set_trial(double eps0, double curvature) {
     eps0_t_ = eps0;
     phi_t_ = curvature;
     if (fibres_.empty()) return {};
-    const FibreSums sums = fibres_.front().material->set_trial_fibres(fibres_.data(), fibres_.size(), eps0, curvature, on_branches);
+    FibreSums sums;
+    for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
+        SectionFibre* first = fibres_.data() + groups_[g];
+        const FibreSums part = first->material->set_trial_fibres(first, groups_[g + 1] - groups_[g], eps0, curvature, on_branches);
+        sums.N += part.N;
+        sums.M += part.M;
+        sums.k11 += part.k11;
+        sums.k12 += part.k12;
+        sums.k22 += part.k22;
+    }
     SectionResponse r;
     r.N = sums.N;
     r.M = sums.M;
@@ -135,17 +167,27 @@ double FibreSection::moment_capacity(double N, double sign) const {
     return std::abs(a.M + t * (b.M - a.M));
 }
 
-double FibreSection::first_yield_moment(double N) const {
-    // Elastic stresses σ = N·E/EA + M·E·y/EI (with M positive compressing +y) reach fy first at
-    // the fibre with the smallest margin; residual stresses are part of the initial stress.
+double FibreSection::first_yield_moment(double N) const { return yield_moment(N, true); }
+
+double FibreSection::first_fibre_yield_moment(double N) const { return yield_moment(N, false); }
+
+double FibreSection::yield_moment(double N, bool at_edges) const {
+    // Elastic stresses σ = N·E/EA + M·E·y/EI (with M positive compressing +y) reach the limit
+    // first at the fibre edge with the smallest margin (a wall's outer face, not its middle);
+    // residual stresses are part of the initial stress. A fibre without tensile strength
+    // (concrete) cracks rather than yields: only its compression counts.
     double best = std::numeric_limits<double>::infinity();
     for (const SectionFibre& f : fibres_) {
         const double E = f.material->elastic_modulus();
         const double axial = N * E / ea0_ + f.residual_stress;
-        const double per_moment = -E * f.y / ei0_;
-        if (per_moment == 0.0) continue;
-        const double limit = per_moment > 0.0 ? (f.limit_tension - axial) / per_moment : (-f.limit_compression - axial) / per_moment;
-        best = std::min(best, limit);
+        const double extent = at_edges ? f.extent : 0.0;
+        for (double edge : {f.y - extent, f.y + extent}) {
+            const double per_moment = -E * edge / ei0_;
+            if (per_moment == 0.0) continue;
+            if (per_moment > 0.0 && f.limit_tension == 0.0) continue;
+            const double limit = per_moment > 0.0 ? (f.limit_tension - axial) / per_moment : (-f.limit_compression - axial) / per_moment;
+            best = std::min(best, limit);
+        }
     }
     return best;
 }

@@ -61,14 +61,26 @@ public:
     // Every (N, M) the fibres can carry at their limit stresses is a convex polygon (a sum of
     // one segment per fibre). The plastic hinge's capacity: the smooth curve through its
     // breakpoints, for positive (sign > 0) and negative bending.
-    const CapacityCurve& hinge_capacity(double sign) const { return capacity_->hinge[sign > 0.0 ? 0 : 1]; }
+    // A section with a design strain limit (concrete) takes its capacity by strain limits
+    // instead (section/strain_limit_capacity.hpp).
+    const CapacityCurve& hinge_capacity(double sign) const;
     double hinge_moment_capacity(double N, double sign) const { return hinge_capacity(sign).at(N).moment; }
     double axial_capacity_tension() const { return ny_tension_; }
     double axial_capacity_compression() const { return ny_compression_; }
     double elastic_ea() const { return ea0_; }
     double elastic_ei() const { return ei0_; }
-    // Moment at which the first fibre yields under axial force N (positive bending).
+    // Whether a fibre's law sets a design strain limit (concrete's εcu2).
+    bool has_strain_limits() const;
+    // The fibres as they are, for capacity by strain limits and for pictures.
+    const std::vector<SectionFibre>& fibres() const { return fibres_; }
+    // The capacity by strain limits, or null for a section without them.
+    const SectionCapacity* strain_limit_capacity_curves() const { return strain_limit_hinge_.get(); }
+    // Moment at which the section first yields under axial force N (positive bending), at the
+    // outer edge of its outermost fibres (a tube's outer face, not its mid-wall).
     double first_yield_moment(double N) const;
+    // The same at the fibres' centres: where the fibres themselves start to yield in the SCM
+    // (the hinge measures how far a step advances its ends from it).
+    double first_fibre_yield_moment(double N) const;
 
     // Monotonic M–κ curve at constant N from the virgin state, up to the given curvature.
     std::vector<MomentCurvaturePoint> moment_curvature(double N, double max_curvature,
@@ -84,11 +96,13 @@ public:
 private:
     template <bool on_branches>
     SectionResponse set_trial(double eps0, double curvature);
+    double yield_moment(double N, bool at_edges) const;
     SectionSpec spec_; // kept to rebuild an unstressed copy
-    std::vector<SectionFibre> fibres_; // all of one law (make_material of the section's steel)
+    std::vector<SectionFibre> fibres_; // grouped by law: group k is [groups_[k], groups_[k + 1])
+    std::vector<std::size_t> groups_;
     // M_p(N) and the hinge's curves, shared by every section of the same fibres.
     std::shared_ptr<const SectionCapacity> capacity_;
-    double E_ = 0.0;
+    std::shared_ptr<const SectionCapacity> strain_limit_hinge_; // sections with strain limits
     double ea0_ = 0.0, ei0_ = 0.0;
     double ny_tension_ = 0.0, ny_compression_ = 0.0;
     double force_scale_ = 1.0, moment_scale_ = 1.0; // for convergence tests

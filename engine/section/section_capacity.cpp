@@ -140,6 +140,15 @@ std::uint64_t fibres_hash(const std::vector<CapacityFibre>& fibres) {
 
 } // namespace
 
+std::shared_ptr<const SectionCapacity> capacity_through_points(std::array<std::vector<CapacityPoint>, 2> polylines) {
+    auto built = std::make_shared<SectionCapacity>();
+    for (auto& curve : polylines)
+        std::sort(curve.begin(), curve.end(), [](const CapacityPoint& a, const CapacityPoint& b) { return a.N < b.N; });
+    built->polyline = std::move(polylines);
+    build_hinge_curves(*built);
+    return built;
+}
+
 std::shared_ptr<const SectionCapacity> section_capacity(const std::vector<CapacityFibre>& fibres) {
     static std::mutex mutex;
     static std::multimap<std::uint64_t, CacheEntry> cache;

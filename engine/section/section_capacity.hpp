@@ -40,4 +40,8 @@ inline constexpr std::size_t direct_capacity_sum_limit = 2048;
 // holds it, else built now. Safe to call from several threads.
 std::shared_ptr<const SectionCapacity> section_capacity(const std::vector<CapacityFibre>& fibres);
 
+// A capacity through given states (N, M) per bending sign: the polylines ordered by N, the
+// hinge's curves through the corners of their convex hull.
+std::shared_ptr<const SectionCapacity> capacity_through_points(std::array<std::vector<CapacityPoint>, 2> polylines);
+
 } // namespace plastica
