@@ -133,7 +133,7 @@ int section_command(const Args& args) {
                 std::optional<render::SectionPath> path;
                 if (series) path = render::most_loaded_end(*series);
                 const render::SectionUnits units{model.report.length_unit, model.report.force_unit};
-                render::write_png(render::draw_chart(render::capacity_chart(spec.name, capacity, units, path)),
+                render::write_png(render::draw_chart(render::capacity_chart(spec.name, capacity, units, path, section.has_strain_limits())),
                                   (folder / (stem + "_capacity.png")).string());
                 render::write_png(render::draw_chart(render::moment_curvature_chart(spec.name, curvature, units)),
                                   (folder / (stem + "_moment_curvature.png")).string());

@@ -229,6 +229,11 @@ TableSpec section_table_spec() {
         number("b", dimension::length).positive().needed().of("rectangle").about("`rectangle`: width"),
         number("h", dimension::length).positive().needed().of("rectangle").about("`rectangle`: depth"),
         whole("fibres", 1, 100000).fallback(10.0).of("rectangle").varied_in_studies().about("`rectangle`: layers through the depth"),
+        text("profile").of("i")
+            .about("`i`: a rolled profile by name, its plates and root radius from the tables of EN 10365 (`\"IPE 300\"`, "
+                   "`\"HEA 200\"`, `\"HEB 200\"`, `\"HEM 200\"`, in mm) and the AISC Shapes Database v15.0 (`\"W14x90\"`, in "
+                   "inches), converted to the scene's [units] (which it needs); chooses `shape = \"i\"` by itself; the list: "
+                   "io/rolled_profiles.cpp"),
         number("depth", dimension::length).positive().needed().of("i").about("`i`: doubly symmetric I/H section, overall depth"),
         number("flange_width", dimension::length).positive().needed().of("i").about("`i`"),
         number("flange_thickness", dimension::length).positive().needed().of("i").about("`i`; two flanges thinner than the depth"),

@@ -1,5 +1,6 @@
 #include "section_shapes.hpp"
 
+#include "rolled_profiles.hpp"
 #include "scene_error.hpp"
 
 #include <algorithm>
@@ -99,12 +100,34 @@ void read_slab(TomlTableReader& t, SectionParts& parts, double top) {
 // thickness (so a residual-stress pattern across the flange is represented), web in layers,
 // and with a root radius r the four fillets between web and flanges, each (1 − π/4)·r² with its
 // centroid 0.2234·r from the flange (a rolled section's tabulated A, I and W_pl).
+// A rolled profile's dimensions in the scene's length unit.
+struct IDimensions {
+    double d, bf, tf, tw, r;
+};
+
+IDimensions rolled_dimensions(TomlTableReader& t) {
+    for (const char* key : {"depth", "flange_width", "flange_thickness", "web_thickness", "root_radius"})
+        if (t.has(key)) t.fail(key, "the profile sets it; leave it out, or give the plates without `profile`");
+    const std::string name = t.string("profile");
+    const RolledProfile* p = find_rolled_profile(name);
+    if (!p) {
+        const std::string near = nearest_profile_name(name);
+        t.fail("profile", "no rolled profile named '" + name + "' (EN 10365 IPE, HEA, HEB, HEM; AISC W)" +
+                              (near.empty() ? std::string() : "; did you mean '" + near + "'?"));
+    }
+    if (!t.units())
+        t.fail("profile", std::string("a rolled profile's dimensions are in ") + (p->inches ? "inches" : "millimetres") +
+                              ": give the scene a [units] table so that they can be converted");
+    const double unit = t.units()->to_scene(p->inches ? "1 in" : "1 mm", dimension::length);
+    return {p->depth * unit, p->flange_width * unit, p->flange_thickness * unit, p->web_thickness * unit, p->root_radius * unit};
+}
+
 void i_section(TomlTableReader& t, SectionParts& parts) {
     const ShapeMaterial& m = parts.main();
-    const double d = t.number("depth");
-    const double bf = t.number("flange_width");
-    const double tf = t.number("flange_thickness");
-    const double tw = t.number("web_thickness");
+    const bool rolled = t.has("profile");
+    const IDimensions given = rolled ? rolled_dimensions(t) : IDimensions{t.number("depth"), t.number("flange_width"), t.number("flange_thickness"),
+                                                                           t.number("web_thickness"), t.number("root_radius")};
+    const double d = given.d, bf = given.bf, tf = given.tf, tw = given.tw;
     if (2.0 * tf >= d) t.fail("flange_thickness", "two flanges must be thinner than the depth");
     if (tw > bf) t.fail("web_thickness", "the web must not be wider than the flanges");
     const int strips = t.integer("flange_strips");
@@ -112,7 +135,7 @@ void i_section(TomlTableReader& t, SectionParts& parts) {
     const int web = t.integer("web_fibres");
     const double ratio = t.number("residual_stress");
     const double hw = d - 2.0 * tf;
-    const double r = t.number("root_radius");
+    const double r = given.r;
     if (2.0 * r > hw || tw + 2.0 * r > bf)
         t.fail("root_radius", "expected a radius ≥ 0 whose fillets fit between the flanges and within their width");
     const double fillet_area = (1.0 - M_PI / 4.0) * r * r, fillet_y = hw / 2.0 - 0.2234 * r;
@@ -213,7 +236,8 @@ const std::vector<SectionShape>& section_shapes() {
 }
 
 const SectionShape& read_section_shape(TomlTableReader& t) {
-    const std::string chosen = t.choice("shape");
+    // A rolled profile is an I: `profile` alone chooses the shape.
+    const std::string chosen = t.has("profile") && !t.has("shape") ? "i" : t.choice("shape");
     t.choose_group(chosen);
     return *std::find_if(section_shapes().begin(), section_shapes().end(), [&](const SectionShape& s) { return s.name == chosen; });
 }

@@ -16,7 +16,7 @@ std::string unit_of(const char* array, const SectionUnits& units) {
 } // namespace
 
 ChartFigure capacity_chart(const std::string& section_name, const std::vector<CapacityRow>& rows, const SectionUnits& units,
-                           const std::optional<SectionPath>& path) {
+                           const std::optional<SectionPath>& path, bool strain_limits) {
     ChartFigure chart{section_name + ": N-M capacity of the fibre section",
                       with_unit("bending moment M", unit_of(result::name::moment_i, units)),
                       with_unit("axial force N", unit_of(result::name::axial_force, units)), {}, true};
@@ -32,6 +32,19 @@ ChartFigure capacity_chart(const std::string& section_name, const std::vector<Ca
         chart.series[3].x.push_back(-r.first_yield_moment);
         for (ChartSeries& s : chart.series) s.y.push_back(r.axial_force);
     }
+    if (strain_limits) {
+        ChartSeries positive{"strain limits (EN 1992-1-1): the hinges' capacity", {}, {}, colour::hinge_plastic, 2.5f};
+        ChartSeries negative{"", {}, {}, colour::hinge_plastic, 2.5f};
+        for (const CapacityRow& r : rows) {
+            if (r.hinge_moment_positive == 0.0 && r.hinge_moment_negative == 0.0) continue;
+            positive.x.push_back(r.hinge_moment_positive);
+            negative.x.push_back(r.hinge_moment_negative);
+            positive.y.push_back(r.axial_force);
+            negative.y.push_back(r.axial_force);
+        }
+        chart.series.push_back(positive);
+        chart.series.push_back(negative);
+    }
     if (path) chart.series.push_back({"path of " + path->where, path->moment, path->axial_force, colour::current_point, 2.0f});
     return chart;
 }
@@ -43,14 +56,30 @@ ChartFigure moment_curvature_chart(const std::string& section_name, const std::v
                       with_unit("bending moment M", unit_of(result::name::moment_i, units)), {}, true};
     const Rgb shades[] = {{31, 90, 180}, {40, 150, 70}, {230, 120, 20}, {150, 30, 170}, {90, 90, 90}};
     int shade = 0;
+    // A section with concrete: where it cracks, where its steel yields and where it crushes.
+    ChartSeries cracking{"cracking", {}, {}, {120, 120, 120}, 9.0f, true};
+    ChartSeries yielding{"steel yields", {}, {}, colour::hinge_yielding_high, 9.0f, true};
+    ChartSeries crushing{"concrete at eps_cu2", {}, {}, {20, 20, 20}, 9.0f, true};
     for (const MomentCurvatureCurve& c : curves) {
-        ChartSeries line{"N/Ny = " + number(c.axial_ratio), {}, {}, shades[shade++ % 5], 2.5f};
-        for (const MomentCurvaturePoint& p : c.points) {
+        const std::string ratio = (c.of_compression && c.axial_ratio > 0.0 ? "-" : "") + number(c.axial_ratio);
+        ChartSeries line{(c.of_compression ? "N/Nc = " : "N/Ny = ") + ratio, {}, {}, shades[shade++ % 5], 2.5f};
+        for (std::size_t k = 0; k < c.points.size(); ++k) {
+            const MomentCurvaturePoint& p = c.points[k];
             line.x.push_back(p.curvature);
             line.y.push_back(p.moment);
+            if (!c.of_compression) continue;
+            const MomentCurvaturePoint* before = k > 0 ? &c.points[k - 1] : nullptr;
+            const auto first = [&](bool now, bool then, ChartSeries& marks) {
+                if (now && !then) marks.x.push_back(p.curvature), marks.y.push_back(p.moment);
+            };
+            first(p.cracked, before && before->cracked, cracking);
+            first(p.yielded, before && before->yielded, yielding);
+            first(p.crushed, before && before->crushed, crushing);
         }
         chart.series.push_back(line);
     }
+    for (ChartSeries* marks : {&cracking, &yielding, &crushing})
+        if (!marks->x.empty()) chart.series.push_back(*marks);
     return chart;
 }
 

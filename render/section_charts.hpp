@@ -18,8 +18,10 @@ struct SectionUnits {
     std::string length, force;
 };
 
+// With `strain_limits` (a section with concrete) the hinges' capacity by strain limits is drawn
+// beside the fully plastic one.
 ChartFigure capacity_chart(const std::string& section_name, const std::vector<CapacityRow>& rows, const SectionUnits& units,
-                           const std::optional<SectionPath>& path = std::nullopt);
+                           const std::optional<SectionPath>& path = std::nullopt, bool strain_limits = false);
 ChartFigure moment_curvature_chart(const std::string& section_name, const std::vector<MomentCurvatureCurve>& curves,
                                    const SectionUnits& units);
 

@@ -167,7 +167,53 @@ double FibreSection::moment_capacity(double N, double sign) const {
     return std::abs(a.M + t * (b.M - a.M));
 }
 
-double FibreSection::first_yield_moment(double N) const { return yield_moment(N, true); }
+double FibreSection::first_yield_moment(double N) const {
+    // Concrete cracks long before steel yields: its first yield is the cracked section's.
+    return has_strain_limits() ? cracked_yield_moment(N) : yield_moment(N, true);
+}
+
+double FibreSection::axial_strain_for(double N, double curvature, double start) {
+    double eps0 = start, lo = -1.0, hi = 1.0;
+    for (int it = 0; it < 200; ++it) {
+        const SectionResponse r = set_trial_deformation(eps0, curvature);
+        const double g = r.N - N;
+        if (std::abs(g) < 1e-12 * force_scale_) break;
+        if (g > 0.0) hi = std::min(hi, eps0); else lo = std::max(lo, eps0);
+        double next = r.tangent(0, 0) > 0.0 ? eps0 - g / r.tangent(0, 0) : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        eps0 = next;
+    }
+    return eps0;
+}
+
+double FibreSection::cracked_yield_moment(double N) const {
+    if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
+    FibreSection virgin(spec_);
+    const auto steel_yields = [&](double curvature) {
+        virgin.axial_strain_for(N, curvature, 0.0);
+        return std::any_of(virgin.fibres_.begin(), virgin.fibres_.end(),
+                           [](const SectionFibre& f) { return f.limit_tension > 0.0 && f.material->yielding(); });
+    };
+    // Bracket the first yield in curvature, then bisect.
+    double lo = 0.0, hi = first_fibre_yield_moment(0.0) / ei0_;
+    for (int k = 0; k < 60 && !steel_yields(hi); ++k) lo = hi, hi *= 2.0;
+    for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (steel_yields(mid) ? hi : lo) = mid;
+    }
+    virgin.axial_strain_for(N, lo, 0.0);
+    return virgin.set_trial_deformation(virgin.eps0_t_, lo).M;
+}
+
+void FibreSection::mark_events(MomentCurvaturePoint& p) const {
+    for (const SectionFibre& f : fibres_) {
+        const double strain = f.material->strain();
+        const double limit = f.material->strain_limits().bending_compression;
+        if (f.limit_tension == 0.0 && strain > 0.0) p.cracked = true;
+        if (f.limit_tension > 0.0 && f.material->yielding()) p.yielded = true;
+        if (std::isfinite(limit) && strain < -limit) p.crushed = true;
+    }
+}
 
 double FibreSection::first_fibre_yield_moment(double N) const { return yield_moment(N, false); }
 
@@ -197,22 +243,19 @@ std::vector<MomentCurvaturePoint> FibreSection::moment_curvature(double N, doubl
     FibreSection virgin(spec_);
     std::vector<MomentCurvaturePoint> curve;
     double eps0 = 0.0;
+    bool cracked = false, yielded = false, crushed = false;
     for (int p = 0; p <= points; ++p) {
         const double phi = max_curvature * p / points;
-        // Axial equilibrium at fixed curvature: N(ε0) is monotone, so safeguarded Newton.
-        double lo = -1.0, hi = 1.0;
-        for (int it = 0; it < 200; ++it) {
-            SectionResponse r = virgin.set_trial_deformation(eps0, phi);
-            const double g = r.N - N;
-            if (std::abs(g) < 1e-12 * force_scale_) break;
-            if (g > 0.0) hi = std::min(hi, eps0); else lo = std::max(lo, eps0);
-            double next = r.tangent(0, 0) > 0.0 ? eps0 - g / r.tangent(0, 0) : 0.5 * (lo + hi);
-            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            eps0 = next;
-        }
+        eps0 = virgin.axial_strain_for(N, phi, eps0);
         SectionResponse r = virgin.set_trial_deformation(eps0, phi);
+        MomentCurvaturePoint point{phi, r.M, eps0};
+        virgin.mark_events(point);
+        // Once happened, it stays so (a fibre that closes again was still cracked).
+        point.cracked = cracked = cracked || point.cracked;
+        point.yielded = yielded = yielded || point.yielded;
+        point.crushed = crushed = crushed || point.crushed;
         virgin.commit();
-        curve.push_back({phi, r.M, eps0});
+        curve.push_back(point);
     }
     return curve;
 }

@@ -38,6 +38,10 @@ struct MomentCurvaturePoint {
     double curvature = 0.0;
     double moment = 0.0;
     double eps0 = 0.0;
+    // What has happened by this point: a fibre without tensile strength opened (concrete
+    // cracked), a fibre with tensile strength yielded (steel), a fibre passed its design
+    // compressive limit (concrete crushed at εcu2).
+    bool cracked = false, yielded = false, crushed = false;
 };
 
 class FibreSection {
@@ -97,6 +101,12 @@ private:
     template <bool on_branches>
     SectionResponse set_trial(double eps0, double curvature);
     double yield_moment(double N, bool at_edges) const;
+    // The moment at which the first steel fibre yields in the cracked section (monotonic, from
+    // the unstressed state), for sections with concrete.
+    double cracked_yield_moment(double N) const;
+    // ε0 that carries N at curvature κ from the unstressed state (N(ε0) is monotone).
+    double axial_strain_for(double N, double curvature, double start);
+    void mark_events(MomentCurvaturePoint& point) const;
     SectionSpec spec_; // kept to rebuild an unstressed copy
     std::vector<SectionFibre> fibres_; // grouped by law: group k is [groups_[k], groups_[k + 1])
     std::vector<std::size_t> groups_;

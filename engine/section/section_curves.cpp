@@ -1,6 +1,9 @@
 #include "section/section_curves.hpp"
 
+#include "section/strain_limit_capacity.hpp"
+
 #include <algorithm>
+#include <cmath>
 
 namespace plastica {
 
@@ -25,8 +28,20 @@ std::vector<MomentCurvatureCurve> moment_curvature_family(const FibreSection& se
                                                           double multiple, int points) {
     const double ny = section.axial_capacity_tension(), kappa_y = first_yield_curvature(section);
     std::vector<MomentCurvatureCurve> curves;
-    for (double ratio : ratios)
-        curves.push_back({ratio, ratio * ny, section.moment_curvature(ratio * ny, multiple * kappa_y, points)});
+    if (!section.has_strain_limits()) {
+        for (double ratio : ratios)
+            curves.push_back({ratio, false, ratio * ny, section.moment_curvature(ratio * ny, multiple * kappa_y, points)});
+        return curves;
+    }
+    const std::vector<LimitState>& limits = strain_limit_states(section)[0];
+    for (double ratio : ratios) {
+        const double N = -ratio * section.axial_capacity_compression();
+        // The limit state at this axial force with the largest curvature: crushing in bending.
+        double crushing = 0.0, nearest = HUGE_VAL;
+        for (const LimitState& s : limits)
+            if (std::abs(s.N - N) < nearest) nearest = std::abs(s.N - N), crushing = std::abs(s.curvature);
+        curves.push_back({ratio, true, N, section.moment_curvature(N, 1.5 * crushing, points)});
+    }
     return curves;
 }
 

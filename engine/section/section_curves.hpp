@@ -24,7 +24,8 @@ struct CapacityRow {
 std::vector<CapacityRow> capacity_table(const FibreSection& section, int points);
 
 struct MomentCurvatureCurve {
-    double axial_ratio = 0.0; // N / N_y (tension)
+    double axial_ratio = 0.0; // N / N_y (tension); for a section with concrete −N / N_c (compression)
+    bool of_compression = false;
     double axial_force = 0.0;
     std::vector<MomentCurvaturePoint> points;
 };
@@ -32,7 +33,9 @@ struct MomentCurvatureCurve {
 // The section's first-yield curvature without axial force: M_y(0) / EI.
 double first_yield_curvature(const FibreSection& section);
 
-// M–κ at N = ratio × N_y for each ratio, from zero to `multiple` × the first-yield curvature.
+// M–κ at N = ratio × N_y for each ratio, from zero to `multiple` × the first-yield curvature;
+// for a section with concrete at N = −ratio × N_c (compression), to 1.5 × the curvature at which
+// its compressed face reaches εcu2 under that force.
 std::vector<MomentCurvatureCurve> moment_curvature_family(const FibreSection& section, const std::vector<double>& ratios,
                                                           double multiple, int points);
 
