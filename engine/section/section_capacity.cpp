@@ -38,6 +38,29 @@ std::vector<Point2> convex_hull(std::vector<Point2> points) {
     return hull;
 }
 
+// Fibres at one height with equal limits act as one: a breakpoint between them is a plastic
+// state on a straight side, which the hull would keep or drop by round-off, making the hinge's
+// curve of a symmetric section differ between +N and −N (a tube's paired fibres: 0.8 %).
+std::vector<CapacityFibre> merged_by_height(std::vector<CapacityFibre> fibres) {
+    std::sort(fibres.begin(), fibres.end(), [](const CapacityFibre& a, const CapacityFibre& b) {
+        return a.y < b.y || (a.y == b.y && (a.limit_tension < b.limit_tension ||
+                                            (a.limit_tension == b.limit_tension && a.limit_compression < b.limit_compression)));
+    });
+    double span = 0.0;
+    for (const CapacityFibre& f : fibres) span = std::max(span, std::abs(f.y));
+    std::vector<CapacityFibre> out;
+    for (const CapacityFibre& f : fibres) {
+        if (!out.empty() && std::abs(out.back().y - f.y) <= 1e-12 * span && out.back().limit_tension == f.limit_tension &&
+            out.back().limit_compression == f.limit_compression) {
+            out.back().y = (out.back().y * out.back().area + f.y * f.area) / (out.back().area + f.area);
+            out.back().area += f.area;
+        } else {
+            out.push_back(f);
+        }
+    }
+    return out;
+}
+
 void build_polylines(const std::vector<CapacityFibre>& fibres, SectionCapacity& capacity) {
     // Fully plastic state: with positive bending the fibres below the neutral axis are in
     // tension (+fy) and those above in compression (−fy); the fibre the axis crosses carries
@@ -159,7 +182,7 @@ std::shared_ptr<const SectionCapacity> section_capacity(const std::vector<Capaci
             if (auto held = at->second.capacity.lock(); held && same_fibres(at->second.fibres, fibres)) return held;
     }
     auto built = std::make_shared<SectionCapacity>();
-    build_polylines(fibres, *built);
+    build_polylines(merged_by_height(fibres), *built);
     build_hinge_curves(*built);
     const std::lock_guard<std::mutex> lock(mutex);
     for (auto at = cache.begin(); at != cache.end();) at = at->second.capacity.expired() ? cache.erase(at) : std::next(at);
