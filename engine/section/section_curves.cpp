@@ -33,7 +33,7 @@ std::vector<MomentCurvatureCurve> moment_curvature_family(const FibreSection& se
             curves.push_back({ratio, false, ratio * ny, section.moment_curvature(ratio * ny, multiple * kappa_y, points)});
         return curves;
     }
-    const std::vector<LimitState>& limits = strain_limit_states(section)[0];
+    const std::vector<LimitState> limits = strain_limit_states(section)[0];
     for (double ratio : ratios) {
         const double N = -ratio * section.axial_capacity_compression();
         // The limit state at this axial force with the largest curvature: crushing in bending.
