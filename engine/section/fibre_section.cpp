@@ -196,6 +196,7 @@ double FibreSection::cracked_yield_moment(double N) const {
     };
     // Bracket the first yield in curvature, then bisect.
     double lo = 0.0, hi = first_fibre_yield_moment(0.0) / ei0_;
+    if (!(hi > 0.0) || !std::isfinite(hi)) hi = 1e-9;
     for (int k = 0; k < 60 && !steel_yields(hi); ++k) lo = hi, hi *= 2.0;
     for (int k = 0; k < 60; ++k) {
         const double mid = 0.5 * (lo + hi);

@@ -28,12 +28,12 @@ std::vector<MomentCurvatureCurve> moment_curvature_family(const FibreSection& se
                                                           double multiple, int points) {
     const double ny = section.axial_capacity_tension(), kappa_y = first_yield_curvature(section);
     std::vector<MomentCurvatureCurve> curves;
-    if (!section.has_strain_limits()) {
+    const std::vector<LimitState> limits = section.has_strain_limits() ? strain_limit_states(section)[0] : std::vector<LimitState>{};
+    if (limits.empty()) {
         for (double ratio : ratios)
             curves.push_back({ratio, false, ratio * ny, section.moment_curvature(ratio * ny, multiple * kappa_y, points)});
         return curves;
     }
-    const std::vector<LimitState> limits = strain_limit_states(section)[0];
     for (double ratio : ratios) {
         const double N = -ratio * section.axial_capacity_compression();
         // The limit state at this axial force with the largest curvature: crushing in bending.

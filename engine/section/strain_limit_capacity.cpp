@@ -55,6 +55,8 @@ std::array<std::vector<LimitState>, 2> strain_limit_states(const FibreSection& s
         const double sign = side == 0 ? 1.0 : -1.0;
         const Faces f = faces_of(fibres, sign);
         const double h = f.compressed - f.bottom;
+        // Fibres all at one height (a list of points) have no depth to bend over.
+        if (!(h > 0.0) || !std::isfinite(h)) return {};
         // The strain at z is top + (compressed − z)·k; in the section's terms ε0 − y·κ.
         const auto add = [&](double top, double k) {
             LimitState s;
