@@ -1,6 +1,7 @@
-// libFuzzer target: any byte string given to the scene reader must give a Model or a located
-// SceneError — never a crash, a hang, an uncaught exception or undefined behaviour. The models/
-// folder is the seed corpus. Findings become cases in tests/test_scene_errors.cpp.
+// libFuzzer target (docs/ci.md, `make fuzz`): any byte string given to the scene reader must give
+// a Model or a located SceneError — never a crash, a hang, an uncaught exception or undefined
+// behaviour. It starts from the scenes in models/; an input that fails becomes a case in
+// tests/test_scene_errors.cpp.
 #include "analysis/path_following.hpp"
 #include "scene_error.hpp"
 #include "scene_reader.hpp"
