@@ -45,6 +45,8 @@ private:
     const UnitSystem* units() const { return units_ ? &*units_ : nullptr; }
     void read_materials(TomlTableReader& top);
     void read_sections(TomlTableReader& top);
+    void resolve_open_formulations();
+    bool all_nodes_on_one_line() const;
     int section_of(TomlTableReader& r);
 
     // Geometry and the nodes other tables name (scene_geometry_reader.cpp).
@@ -104,6 +106,11 @@ private:
     std::optional<UnitSystem> units_;
     std::map<std::string, Material> materials_;
     std::map<std::string, int> section_index_;
+    struct OpenFormulation {
+        int section = 0;
+        bool points_given = false;
+    };
+    std::vector<OpenFormulation> open_formulations_; // distributed sections without a formulation
     MeshBuilder mesh_{model_, max_elements};
     std::vector<int> load_lines_; // of each [[load]], in order
     int nodal_loads_ = 0;                                     // [[load]]s, ahead of the lumped ones

@@ -32,6 +32,7 @@ Model SceneBuilder::build() {
     read_analysis(top);
     read_stages(top);
     read_report(top);
+    resolve_open_formulations();
     read_imperfections(top);
     top.finish();
     if (!model_.loaded() && !model_.has_moving_base() && !(model_.transient() && model_.dynamics.excites()))

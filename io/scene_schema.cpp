@@ -270,16 +270,21 @@ TableSpec section_table_spec() {
             .follows("`\"hinges\"` with `fy` (`\"distributed\"` for a hardening law), else `\"none\"`")
             .about("how an inelastic section yields. `hinges`: refined plastic hinges at element ends (pseudo-springs from the "
                    "section's tangent below capacity; at capacity, N–M plasticity with plastic rotation and axial strain; one hinge "
-                   "per node where two elements meet). `distributed`: fibre sections at Gauss–Legendre points along every element "
-                   "(plastic zone; displacement-based, linear curvature per element). The former boolean `plastic` is refused with "
+                   "per node where two elements meet). `distributed`: fibre sections at integration points along every element "
+                   "(plastic zone; force- or displacement-based, see `formulation`). The former boolean `plastic` is refused with "
                    "a message naming this key"),
-        one_of("formulation", {"displacement", "force"}).fallback(std::string("displacement"))
+        one_of("formulation", {"displacement", "force"})
+            .follows("`\"force\"` in a frame (nodes not all on one line) without springs, bases, `[[self_contact]]` or pressure; "
+                     "else `\"displacement\"`, as when the section gives `segments`, `segment_grading`, `axial_strain` or "
+                     "`integration_points = 2`")
             .about(distributed + "how the sections follow the element's ends. `displacement`: curvature linear along the element "
                    "(or each segment), no element iterations; collapse loads first-order high in the element length (3.6 % on a "
                    "portal with 8 elements per member). `force`: moments from the end forces by equilibrium (exact), sections at "
                    "Gauss–Lobatto points including the ends, element iterations; collapse loads of beams exact on 2 elements, the "
-                   "portal within 0.1 % on 8, at 2–13 × the analysis time on frames; choose it for frames (not for catenary "
-                   "action, where it crawls) (docs/method.md, force-based members)"),
+                   "portal within 0.1 % on 8, at 2–13 × the analysis time on frames; the default for frames; under contact "
+                   "and catenary action its element iterations crawl, so straight beams and scenes with contact default to "
+                   "`displacement` (docs/method.md, force-based "
+                   "members)"),
         whole("integration_points", 2, 10).follows("3; `force`: 5").varied_in_studies()
             .about(distributed + "Gauss–Legendre points per element, or per segment (one point would leave the antisymmetric "
                    "bending mode without stiffness); with `formulation = \"force\"`, 3–10 Gauss–Lobatto points per element"),

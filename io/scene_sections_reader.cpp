@@ -9,10 +9,16 @@
 #include "material/material_registry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
 namespace plastica::detail {
+
+namespace {
+// Keys that only a displacement-based member has: giving one chooses that formulation.
+constexpr std::array<const char*, 3> displacement_only_keys{"segments", "segment_grading", "axial_strain"};
+} // namespace
 
 // [units]: the scene's length and force; numbers may then be written with units.
 void SceneBuilder::read_units(TomlTableReader& top) {
@@ -116,13 +122,19 @@ void SceneBuilder::read_sections(TomlTableReader& top) {
             r.fail("plasticity", "an inelastic section needs a material with 'fy'");
         if (plasticity == "distributed") {
             s.plasticity = Plasticity::distributed;
-            s.formulation = r.choice("formulation") == "force" ? Formulation::force : Formulation::displacement;
+            // Left open, the formulation follows the scene (resolve_open_formulations): a key
+            // only the displacement formulation has chooses it.
+            const bool open = !r.has("formulation") &&
+                              std::none_of(displacement_only_keys.begin(), displacement_only_keys.end(), [&](const char* k) { return r.has(k); }) &&
+                              (!r.has("integration_points") || r.integer("integration_points") >= 3);
+            s.formulation = r.choice_or("formulation", "displacement") == "force" ? Formulation::force : Formulation::displacement;
+            if (open) open_formulations_.push_back({static_cast<int>(model_.sections.size()), r.has("integration_points")});
             if (s.formulation == Formulation::force) {
                 // Lobatto points: three integrate the elastic flexibility exactly.
                 s.integration_points = r.integer_or("integration_points", default_force_based_points);
                 if (s.integration_points < 3)
                     r.fail("integration_points", "expected a whole number from 3 to 10 for formulation = \"force\" (Gauss–Lobatto points include both ends)");
-                for (const char* key : {"segments", "segment_grading", "axial_strain"})
+                for (const char* key : displacement_only_keys)
                     if (r.has(key)) r.fail(key, "a force-based member has no segments: its sections take the curvature their exact moments need");
             }
             else s.integration_points = r.integer_or("integration_points", default_integration_points); // one point leaves a mode without stiffness
@@ -167,6 +179,36 @@ int SceneBuilder::section_of(TomlTableReader& r) {
     auto it = section_index_.find(name);
     if (it == section_index_.end()) r.fail("section", "no [[section]] named '" + name + "'");
     return it->second;
+}
+
+// A distributed member whose formulation the scene leaves open is force-based, exact for any
+// mesh, where its scene is a frame: members in more than one direction, nothing acting along
+// them or moving with them. Springs and bases (a ring on plates, a pipe on soil), self-contact
+// and follower pressure bring contact forces, and a straight beam between supports can end in
+// catenary action; the force formulation's element iterations follow those slowly, while the
+// displacement formulation converges there with today's meshes (docs/method.md).
+void SceneBuilder::resolve_open_formulations() {
+    const bool contact_or_pressure = !model_.springs.empty() || !model_.self_contact.empty() || !model_.pressures.empty();
+    if (contact_or_pressure || all_nodes_on_one_line()) return;
+    for (const OpenFormulation& open : open_formulations_) {
+        SectionSpec& s = model_.sections[static_cast<std::size_t>(open.section)];
+        s.formulation = Formulation::force;
+        if (!open.points_given) s.integration_points = default_force_based_points;
+    }
+}
+
+// Before imperfections: a column given a bow is still one straight member.
+bool SceneBuilder::all_nodes_on_one_line() const {
+    const std::vector<Node>& nodes = model_.nodes;
+    if (nodes.size() < 3) return true;
+    const Node& origin = nodes[0];
+    const auto distance = [&](const Node& n) { return std::hypot(n.x - origin.x, n.y - origin.y); };
+    const Node& far = *std::max_element(nodes.begin(), nodes.end(), [&](const Node& a, const Node& b) { return distance(a) < distance(b); });
+    const double length = distance(far);
+    if (!(length > 0.0)) return true;
+    const double ax = (far.x - origin.x) / length, ay = (far.y - origin.y) / length;
+    return std::all_of(nodes.begin(), nodes.end(),
+                       [&](const Node& n) { return std::abs(ax * (n.y - origin.y) - ay * (n.x - origin.x)) <= 1e-9 * length; });
 }
 
 } // namespace plastica::detail

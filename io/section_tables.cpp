@@ -4,10 +4,11 @@ namespace plastica {
 
 void write_capacity_csv(std::ostream& out, const std::vector<CapacityRow>& rows) {
     out.precision(12);
-    out << "axial_force,moment_positive,moment_negative,first_yield_moment,hinge_moment_positive,hinge_moment_negative\n";
+    out << "axial_force,moment_positive,moment_negative,first_yield_moment,hinge_moment_positive,hinge_moment_negative,"
+           "first_yield_moment_negative\n";
     for (const CapacityRow& r : rows)
         out << r.axial_force << ',' << r.moment_positive << ',' << r.moment_negative << ',' << r.first_yield_moment << ','
-            << r.hinge_moment_positive << ',' << r.hinge_moment_negative << '\n';
+            << r.hinge_moment_positive << ',' << r.hinge_moment_negative << ',' << r.first_yield_moment_negative << '\n';
 }
 
 void write_moment_curvature_csv(std::ostream& out, const std::vector<MomentCurvatureCurve>& curves) {

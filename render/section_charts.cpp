@@ -5,6 +5,8 @@
 #include "result_schema.hpp"
 #include "series_summary.hpp"
 
+#include <cmath>
+
 namespace plastica::render {
 
 namespace {
@@ -28,9 +30,13 @@ ChartFigure capacity_chart(const std::string& section_name, const std::vector<Ca
     for (const CapacityRow& r : rows) {
         chart.series[0].x.push_back(r.moment_positive);
         chart.series[1].x.push_back(r.moment_negative);
+        chart.series[0].y.push_back(r.axial_force);
+        chart.series[1].y.push_back(r.axial_force);
+        if (std::isnan(r.first_yield_moment)) continue; // no elastic range at this N
         chart.series[2].x.push_back(r.first_yield_moment);
-        chart.series[3].x.push_back(-r.first_yield_moment);
-        for (ChartSeries& s : chart.series) s.y.push_back(r.axial_force);
+        chart.series[3].x.push_back(r.first_yield_moment_negative);
+        chart.series[2].y.push_back(r.axial_force);
+        chart.series[3].y.push_back(r.axial_force);
     }
     if (strain_limits) {
         ChartSeries positive{"strain limits (EN 1992-1-1): the hinges' capacity", {}, {}, colour::hinge_plastic, 2.5f};

@@ -36,7 +36,8 @@ int set_where_named(toml::table& root, const TableSpec& table, const std::string
 
 // Sets `plasticity` on every section whose material has a yield stress; returns how many.
 // "force_based" is distributed plasticity in force-based members (their own Lobatto points, no
-// segments); "distributed" the default displacement-based members.
+// segments); "distributed" displacement-based members, named so that the two stay apart
+// whatever the scene's own default would be.
 int set_plasticity(toml::table& root, const std::string& method) {
     const bool force_based = method == "force_based";
     const std::string plasticity = force_based ? "distributed" : method;
@@ -57,7 +58,9 @@ int set_plasticity(toml::table& root, const std::string& method) {
                     t->erase("segments");
                     t->erase("segment_grading");
                     t->erase("axial_strain");
-                } else if (plasticity != "distributed") {
+                } else if (plasticity == "distributed") {
+                    t->insert_or_assign("formulation", "displacement");
+                } else {
                     t->erase("integration_points");
                     t->erase("segments");
                     t->erase("segment_grading");

@@ -75,6 +75,7 @@ fy = 3.55e8
 name = "s"
 material = "steel"
 plasticity = "distributed"
+formulation = "displacement"
 )";
     const std::vector<std::pair<std::string, std::string>> shapes = {
         {"rectangle", "shape = \"rectangle\"\nb = 0.1\nh = 0.2\nfibres = 20\n"},

@@ -190,7 +190,8 @@ TEST_CASE("An elastic–perfectly plastic SDOF under a ground motion matches an 
     }
     std::string text = sdof("[[ground_motion]]\nfile = \"" + path + "\"\ntime_step = 0.005\nunits = 1.0\n", dt, 3.0);
     text.replace(text.find("E = 100.0"), 9, "E = 100.0\nfy = 0.05");
-    text.replace(text.find("I = 1.0"), 7, "I = 1.0\nfibres = 2\nplasticity = \"distributed\"");
+    // Displacement-based: the reference spring below carries that member's parallel stiffness.
+    text.replace(text.find("I = 1.0"), 7, "I = 1.0\nfibres = 2\nplasticity = \"distributed\"\nformulation = \"displacement\"");
     const Run run = run_scene(text);
     REQUIRE(run.summary.status == RunStatus::completed);
 

@@ -88,8 +88,8 @@ TEST_CASE("Force-based members reach the collapse loads of plastic theory on coa
     // exact moment: the plateau is the mechanism load on two elements already (the displacement
     // element is 7.7 % high on 16). What is left: the parallel stiffness (1e-9 EI) and the
     // plateau's hardening of the last fibre pair, well below 1e-3.
-    const std::string header = replaced_all(plastic_beam_header("distributed"), "plasticity = \"distributed\"\n",
-                                            "plasticity = \"distributed\"\nformulation = \"force\"\n");
+    const std::string header = replaced_all(plastic_beam_header("distributed"), "formulation = \"displacement\"\n",
+                                            "formulation = \"force\"\n");
     const double L = 2000.0, Mp = rectangle_Mp;
     for (int elements : {2, 4}) {
         const std::string n = std::to_string(elements);
@@ -120,7 +120,7 @@ TEST_CASE("Elastic–plastic cantilever under a tip load: one force-based elemen
     };
     const double exact = P * sy * sy * sy / (3.0 * E * I) + (plastic_integral(u0) - plastic_integral(u1));
         std::string scene = tip_loaded_rectangle_cantilever(E, fy, "", 1, P);
-    scene = replaced_all(scene, "integration_points = 4\n", "formulation = \"force\"\nintegration_points = 10\n");
+    scene = replaced_all(scene, "formulation = \"displacement\"\nintegration_points = 4\n", "formulation = \"force\"\nintegration_points = 10\n");
     double previous_error = 1.0;
     for (int elements : {1, 2, 4}) {
         const Run r = run_scene(replaced_all(scene, "elements = 1\n", "elements = " + std::to_string(elements) + "\n"));
@@ -166,4 +166,28 @@ TEST_CASE("The force-based ring meets the converged plastic-zone ring", "[force_
     const Run run = run_scene(text);
     REQUIRE(run.summary.status == RunStatus::completed);
     CHECK(run.steps.back().load == Approx(0.315516).epsilon(1e-3));
+}
+
+TEST_CASE("A plastic-zone section that leaves its formulation open is force-based in a frame without contact or pressure", "[force_based]") {
+    const auto formulation_of = [](const std::string& text) { return read_scene_text(text, "open.toml").sections.at(0).formulation; };
+    // A frame: force-based, with its own Lobatto points.
+    const std::string portal = replaced_all(weak_column_portal_in_fibres(8, "formulation = \"force\"\n"), "formulation = \"force\"\n", "");
+    const Model frame = read_scene_text(portal, "portal.toml");
+    CHECK(frame.sections.at(0).formulation == Formulation::force);
+    CHECK(frame.sections.at(0).integration_points == default_force_based_points);
+    // A key only displacement-based members have chooses them.
+    CHECK(formulation_of(replaced_all(portal, "plasticity = \"distributed\"\n", "plasticity = \"distributed\"\nsegments = 2\n")) ==
+          Formulation::displacement);
+    CHECK(formulation_of(replaced_all(portal, "plasticity = \"distributed\"\n", "plasticity = \"distributed\"\nintegration_points = 2\n")) ==
+          Formulation::displacement);
+    // A ring on a rigid base: displacement-based, as its contact needs.
+    const std::string ring = replaced_all(replaced_all(scene_file_text("models/ring_distributed.toml"), "segments = 4\n", ""),
+                                          "integration_points = 2\n", "");
+    CHECK(formulation_of(ring) == Formulation::displacement);
+    // A straight beam, which may end in catenary action: displacement-based.
+    CHECK(formulation_of(replaced_all(scene_file_text("models/gallery/catenary_beam.toml"), "fibres = 20\n",
+                                      "fibres = 20\nplasticity = \"distributed\"\n")) == Formulation::displacement);
+    // A formulation the scene names is kept.
+    CHECK(formulation_of(replaced_all(portal, "plasticity = \"distributed\"\n", "plasticity = \"distributed\"\nformulation = \"displacement\"\n")) ==
+          Formulation::displacement);
 }

@@ -122,8 +122,10 @@ TEST_CASE("A frame of fibre sections loaded past its plastic collapse names the 
     // of the member.
     const std::string control = "[analysis]\nscheme = \"load_control\"\nincrement = 5.0\ntarget_load_factor = 400.0\n";
     const std::string vertical = "[[load]]\nat = [4000.0, 4000.0]\nfy = -1.0\n";
-    for (const char* formulation : {"formulation = \"force\"\n", ""}) {
-        std::string beam = plastic_beam_header("distributed") + formulation + portal_frame() + control;
+    for (const char* formulation : {"force", "displacement"}) {
+        std::string header = plastic_beam_header("distributed");
+        header.replace(header.find("displacement"), 12, formulation);
+        std::string beam = header + portal_frame() + control;
         beam.replace(beam.find("fx = 1.0"), 8, "fx = 0.1");
         const Run b = run_scene(beam);
         CAPTURE(formulation, b.summary.reason);
@@ -134,8 +136,10 @@ TEST_CASE("A frame of fibre sections loaded past its plastic collapse names the 
         CHECK(b.steps.back().load_factor <= 1.2 * 8.0 * rectangle_Mp / 8000.0);
         CHECK_THAT(b.summary.reason, Catch::EndsWith("a plastic mechanism, hinges at capacity at [0, 4000], [4000, 4000], [8000, 4000]"));
     }
-    for (const char* formulation : {"formulation = \"force\"\n", ""}) {
-        std::string sway = plastic_beam_header("distributed") + formulation + portal_frame() + control;
+    for (const char* formulation : {"force", "displacement"}) {
+        std::string header = plastic_beam_header("distributed");
+        header.replace(header.find("displacement"), 12, formulation);
+        std::string sway = header + portal_frame() + control;
         sway.replace(sway.find(vertical), vertical.size(), "");
         const Run s = run_scene(sway);
         CAPTURE(formulation, s.summary.reason);

@@ -321,7 +321,8 @@ double PlasticHingeLaw::trial_yield_advance() const {
         double cap_t = 0.0, cap_c = 0.0;
         const double u_t = utilisation(q_t_, end, cap_t), u_c = utilisation(q_c_, end, cap_c);
         if (!(cap_t > 0.0) || !(cap_c > 0.0)) continue;
-        const double u_y = std::clamp(sections_[end].first_fibre_yield_moment(q_t_[0]) / cap_t, 0.0, 1.0);
+        const double side = section_moment(q_t_, end) >= 0.0 ? 1.0 : -1.0;
+        const double u_y = std::clamp(sections_[end].first_fibre_yield_moment(q_t_[0], side) / cap_t, 0.0, 1.0);
         advance = std::max(advance, u_t - std::max(u_c, u_y));
     }
     return advance;

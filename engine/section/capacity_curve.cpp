@@ -25,6 +25,17 @@ CapacityCurve::CapacityCurve(std::vector<double> N, std::vector<double> M) {
     for (std::size_t i = 1; i + 1 < n; ++i) slope_[i] = 0.5 * (side[i - 1] + side[i]);
 }
 
+double CapacityCurve::bound(double N) const {
+    if (N_.size() < 2 || N < N_.front() || N > N_.back()) return 0.0;
+    if (N == N_.front()) return M_.front();
+    if (N == N_.back()) return M_.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(N_.begin(), N_.end(), N) - N_.begin()) - 1;
+    const double h = N_[k + 1] - N_[k];
+    const double t = (N - N_[k]) / h;
+    const double t2 = t * t, t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * M_[k] + (t3 - 2 * t2 + t) * slope_[k] * h + (-2 * t3 + 3 * t2) * M_[k + 1] + (t3 - t2) * slope_[k + 1] * h;
+}
+
 CapacityValue CapacityCurve::at(double N) const {
     CapacityValue v;
     if (N_.size() < 2 || N <= N_.front() || N >= N_.back()) {

@@ -12,17 +12,21 @@
 namespace plastica {
 
 struct CapacityValue {
-    double moment = 0.0; // |M_p(N)|, zero outside the squash range
-    double slope = 0.0;  // d|M_p|/dN
+    double moment = 0.0; // s·M_p(N) for the curve's bending sign s, at least zero; zero outside the squash range
+    double slope = 0.0;  // its derivative in N
     double curvature = 0.0;
 };
 
 class CapacityCurve {
 public:
     CapacityCurve() = default;
-    // Breakpoints (N, |M|) ordered by N, from the compression squash point to the tension one.
+    // Breakpoints (N, s·M) ordered by N, from the compression squash point to the tension one.
+    // s·M is below zero where a section whose plastic centroid lies off its elastic one (a
+    // composite beam) carries, at that N, only moments of the other sign.
     CapacityCurve(std::vector<double> N, std::vector<double> M);
     CapacityValue at(double N) const;
+    // s·M_p(N) as it is, below zero too, at the squash points included; 0 outside them.
+    double bound(double N) const;
     double lowest() const { return N_.empty() ? 0.0 : N_.front(); }
     double highest() const { return N_.empty() ? 0.0 : N_.back(); }
 

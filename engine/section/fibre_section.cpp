@@ -158,18 +158,23 @@ void FibreSection::revert() {
 
 double FibreSection::moment_capacity(double N, double sign) const {
     if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
+    return std::max((sign > 0.0 ? 1.0 : -1.0) * moment_bound(N, sign), 0.0);
+}
+
+double FibreSection::moment_bound(double N, double sign) const {
     const std::vector<CapacityPoint>& curve = capacity_->polyline[sign > 0.0 ? 0 : 1];
+    if (curve.size() < 2 || N < curve.front().N || N > curve.back().N) return 0.0;
     const auto upper = std::upper_bound(curve.begin() + 1, curve.end() - 1, N,
                                         [](double n, const CapacityPoint& p) { return n < p.N; });
     const CapacityPoint& a = *(upper - 1);
     const CapacityPoint& b = *upper;
     const double t = b.N > a.N ? (N - a.N) / (b.N - a.N) : 0.0;
-    return std::abs(a.M + t * (b.M - a.M));
+    return a.M + t * (b.M - a.M);
 }
 
-double FibreSection::first_yield_moment(double N) const {
+double FibreSection::first_yield_moment(double N, double sign) const {
     // Concrete cracks long before steel yields: its first yield is the cracked section's.
-    return has_strain_limits() ? cracked_yield_moment(N) : yield_moment(N, true);
+    return has_strain_limits() ? cracked_yield_moment(N, sign) : yield_moment(N, true, sign);
 }
 
 double FibreSection::axial_strain_for(double N, double curvature, double start) {
@@ -186,24 +191,25 @@ double FibreSection::axial_strain_for(double N, double curvature, double start) 
     return eps0;
 }
 
-double FibreSection::cracked_yield_moment(double N) const {
+double FibreSection::cracked_yield_moment(double N, double sign) const {
     if (N >= ny_tension_ || N <= -ny_compression_) return 0.0;
     FibreSection virgin(spec_);
+    const double s = sign > 0.0 ? 1.0 : -1.0;
     const auto steel_yields = [&](double curvature) {
-        virgin.axial_strain_for(N, curvature, 0.0);
+        virgin.axial_strain_for(N, s * curvature, 0.0);
         return std::any_of(virgin.fibres_.begin(), virgin.fibres_.end(),
                            [](const SectionFibre& f) { return f.limit_tension > 0.0 && f.material->yielding(); });
     };
     // Bracket the first yield in curvature, then bisect.
-    double lo = 0.0, hi = first_fibre_yield_moment(0.0) / ei0_;
+    double lo = 0.0, hi = first_fibre_yield_moment(0.0, s) / ei0_;
     if (!(hi > 0.0) || !std::isfinite(hi)) hi = 1e-9;
     for (int k = 0; k < 60 && !steel_yields(hi); ++k) lo = hi, hi *= 2.0;
     for (int k = 0; k < 60; ++k) {
         const double mid = 0.5 * (lo + hi);
         (steel_yields(mid) ? hi : lo) = mid;
     }
-    virgin.axial_strain_for(N, lo, 0.0);
-    return virgin.set_trial_deformation(virgin.eps0_t_, lo).M;
+    virgin.axial_strain_for(N, s * lo, 0.0);
+    return s * virgin.set_trial_deformation(virgin.eps0_t_, s * lo).M;
 }
 
 void FibreSection::mark_events(MomentCurvaturePoint& p) const {
@@ -216,9 +222,9 @@ void FibreSection::mark_events(MomentCurvaturePoint& p) const {
     }
 }
 
-double FibreSection::first_fibre_yield_moment(double N) const { return yield_moment(N, false); }
+double FibreSection::first_fibre_yield_moment(double N, double sign) const { return yield_moment(N, false, sign); }
 
-double FibreSection::yield_moment(double N, bool at_edges) const {
+double FibreSection::yield_moment(double N, bool at_edges, double sign) const {
     // Elastic stresses σ = N·E/EA + M·E·y/EI (with M positive compressing +y) reach the limit
     // first at the fibre edge with the smallest margin (a wall's outer face, not its middle);
     // residual stresses are part of the initial stress. A fibre without tensile strength
@@ -229,7 +235,7 @@ double FibreSection::yield_moment(double N, bool at_edges) const {
         const double axial = N * E / ea0_ + f.residual_stress;
         const double extent = at_edges ? f.extent : 0.0;
         for (double edge : {f.y - extent, f.y + extent}) {
-            const double per_moment = -E * edge / ei0_;
+            const double per_moment = -(sign > 0.0 ? 1.0 : -1.0) * E * edge / ei0_;
             if (per_moment == 0.0) continue;
             if (per_moment > 0.0 && f.limit_tension == 0.0) continue;
             const double limit = per_moment > 0.0 ? (f.limit_tension - axial) / per_moment : (-f.limit_compression - axial) / per_moment;

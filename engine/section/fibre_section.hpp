@@ -61,7 +61,12 @@ public:
     void revert();
 
     // Fully plastic moment for axial force N, for positive (sign > 0) or negative bending.
+    // At least zero: a section whose plastic centroid lies off its elastic one (a composite beam)
+    // carries, near a squash load, only moments of one sign (moment_bound is below zero there).
     double moment_capacity(double N, double sign) const;
+    // The edge of the fully plastic domain on that side, signed: the largest M (sign > 0) or the
+    // smallest (sign < 0) the fibres carry with N, at the squash points too.
+    double moment_bound(double N, double sign) const;
     // Every (N, M) the fibres can carry at their limit stresses is a convex polygon (a sum of
     // one segment per fibre). The plastic hinge's capacity: the smooth curve through its
     // breakpoints, for positive (sign > 0) and negative bending.
@@ -69,6 +74,7 @@ public:
     // instead (section/strain_limit_capacity.hpp).
     const CapacityCurve& hinge_capacity(double sign) const;
     double hinge_moment_capacity(double N, double sign) const { return hinge_capacity(sign).at(N).moment; }
+    double hinge_moment_bound(double N, double sign) const { return (sign > 0.0 ? 1.0 : -1.0) * hinge_capacity(sign).bound(N); }
     double axial_capacity_tension() const { return ny_tension_; }
     double axial_capacity_compression() const { return ny_compression_; }
     double elastic_ea() const { return ea0_; }
@@ -81,10 +87,10 @@ public:
     const SectionCapacity* strain_limit_capacity_curves() const { return strain_limit_hinge_.get(); }
     // Moment at which the section first yields under axial force N (positive bending), at the
     // outer edge of its outermost fibres (a tube's outer face, not its mid-wall).
-    double first_yield_moment(double N) const;
+    double first_yield_moment(double N, double sign = 1.0) const;
     // The same at the fibres' centres: where the fibres themselves start to yield in the SCM
     // (the hinge measures how far a step advances its ends from it).
-    double first_fibre_yield_moment(double N) const;
+    double first_fibre_yield_moment(double N, double sign = 1.0) const;
 
     // Monotonic M–κ curve at constant N from the virgin state, up to the given curvature.
     std::vector<MomentCurvaturePoint> moment_curvature(double N, double max_curvature,
@@ -100,10 +106,10 @@ public:
 private:
     template <bool on_branches>
     SectionResponse set_trial(double eps0, double curvature);
-    double yield_moment(double N, bool at_edges) const;
+    double yield_moment(double N, bool at_edges, double sign) const;
     // The moment at which the first steel fibre yields in the cracked section (monotonic, from
     // the unstressed state), for sections with concrete.
-    double cracked_yield_moment(double N) const;
+    double cracked_yield_moment(double N, double sign) const;
     // ε0 that carries N at curvature κ from the unstressed state (N(ε0) is monotone).
     double axial_strain_for(double N, double curvature, double start);
     void mark_events(MomentCurvaturePoint& point) const;

@@ -130,7 +130,7 @@ void build_hinge_curves(SectionCapacity& capacity) {
         const std::size_t to = side == 0 ? lowest : highest;
         for (std::size_t i = from;; i = (i + 1) % hull.size()) {
             N.push_back(hull[i].n);
-            M.push_back(std::abs(hull[i].m));
+            M.push_back(side == 0 ? hull[i].m : -hull[i].m); // s·M: below zero off an eccentric section's side
             if (i == to) break;
         }
         if (side == 0) {

@@ -13,9 +13,11 @@ std::vector<CapacityRow> capacity_table(const FibreSection& section, int points)
     rows.reserve(static_cast<std::size_t>(points));
     for (int k = 0; k < points; ++k) {
         const double N = -compression + (compression + tension) * k / (points - 1);
-        rows.push_back({N, section.moment_capacity(N, 1.0), -section.moment_capacity(N, -1.0),
-                        std::max(0.0, section.first_yield_moment(N)), section.hinge_moment_capacity(N, 1.0),
-                        -section.hinge_moment_capacity(N, -1.0)});
+        double yield_upper = section.first_yield_moment(N, 1.0), yield_lower = -section.first_yield_moment(N, -1.0);
+        // Where N alone yields a fibre whatever the moment, no elastic range is left.
+        if (!(yield_upper > yield_lower)) yield_upper = yield_lower = std::nan("");
+        rows.push_back({N, section.moment_bound(N, 1.0), section.moment_bound(N, -1.0), yield_upper, section.hinge_moment_bound(N, 1.0),
+                        section.hinge_moment_bound(N, -1.0), yield_lower});
     }
     return rows;
 }

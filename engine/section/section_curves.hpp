@@ -9,15 +9,19 @@
 
 namespace plastica {
 
+// Moments are signed edges of the domain at N: the largest (positive bending) and the smallest
+// (negative bending). Off a symmetric section both can have one sign near a squash load (a
+// composite beam's plastic centroid lies off its elastic one, about which M is taken).
 struct CapacityRow {
     double axial_force = 0.0;
     double moment_positive = 0.0;     // fully plastic moment, positive bending
-    double moment_negative = 0.0;     // and negative bending (a negative number)
-    double first_yield_moment = 0.0;  // positive bending, 0 where N alone yields a fibre
+    double moment_negative = 0.0;     // and negative bending (below zero for a section that carries both signs)
+    double first_yield_moment = 0.0;  // the elastic range's upper edge; NaN where N alone yields a fibre
     // The plastic hinge's capacity: the smooth curve through the polygon's corners
     // (section/capacity_curve.hpp), which the hinges and their utilisation are measured against.
     double hinge_moment_positive = 0.0;
-    double hinge_moment_negative = 0.0; // a negative number
+    double hinge_moment_negative = 0.0;
+    double first_yield_moment_negative = 0.0; // its lower edge; NaN with the upper one
 };
 
 // `points` rows from the compressive to the tensile squash load.

@@ -16,6 +16,7 @@ namespace {
 
 struct Faces {
     double compressed = -HUGE_VAL, bottom = HUGE_VAL; // in z = sign·y
+    double top = -HUGE_VAL; // of all fibres: above `compressed` where steel without a limit lies beyond the concrete
     double bending_limit = HUGE_VAL, uniform_limit = HUGE_VAL;
     double tension_limit = HUGE_VAL, tension_z = HUGE_VAL; // the lowest fibre with a tensile limit
     double large_strain = 0.0; // "every steel fibre yielded in tension" where no limit says more
@@ -27,6 +28,7 @@ Faces faces_of(const std::vector<SectionFibre>& fibres, double sign) {
         const UniaxialMaterial::StrainLimits limits = fibre.material->strain_limits();
         const double z = sign * fibre.y;
         f.bottom = std::min(f.bottom, z - fibre.extent);
+        f.top = std::max(f.top, z + fibre.extent);
         if (std::isfinite(limits.bending_compression)) {
             f.compressed = std::max(f.compressed, z + fibre.extent);
             f.bending_limit = std::min(f.bending_limit, limits.bending_compression);
@@ -83,6 +85,16 @@ std::array<std::vector<LimitState>, 2> strain_limit_states(const FibreSection& s
         } else {
             add(f.large_strain, 0.0); // every fibre with tensile strength at its yield
             shallowest = 1e-4 * h;
+        }
+        // Fibres without a compressive limit beyond the concrete (a composite beam's steel in
+        // hogging): while the neutral axis lies among them, nothing limits the strains, and the
+        // states are the fully plastic ones, at the curvature the shallowest limit state has.
+        if (f.top > f.compressed) {
+            const double k = ecu / shallowest;
+            for (int i = 0; i <= 2 * n; ++i) {
+                const double neutral_axis = f.top - (f.top - f.compressed) * i / (2 * n);
+                add(k * (neutral_axis - f.compressed), k);
+            }
         }
         // The compressed face at −εcu2, the neutral axis from the shallowest depth to h: evenly
         // in depth over the last nine tenths (the balanced point lies there), geometrically

@@ -48,7 +48,8 @@ def _value(value):
 class Section:
     """A section's capacity and moment–curvature tables (`plastica section`), as dicts of numpy
     arrays: `capacity` (axial_force, moment_positive, moment_negative, first_yield_moment,
-    hinge_moment_positive, hinge_moment_negative) and `moment_curvature` (axial_ratio, axial_force,
+    hinge_moment_positive, hinge_moment_negative, first_yield_moment_negative; signed edges of the
+    domain) and `moment_curvature` (axial_ratio, axial_force,
     curvature, moment)."""
 
     def __init__(self, name, capacity, moment_curvature):
