@@ -77,3 +77,22 @@ TEST_CASE("No convergence says how far the increment was cut and what round-off 
     f.floor = {1e-9, 0.0, 1.0};
     CHECK_THAT(diagnose_failed_step(f).reason, !Catch::Contains("round-off"));
 }
+
+TEST_CASE("A step that fails with its residual within the tolerance names the criterion that failed", "[stop_diagnosis]") {
+    // The words agree with the verdict: a residual below residual_tolerance is never quoted as
+    // the reason (a crushed pipe stopped "with the residual at 3.5e-09, tolerance 1e-06").
+    FailedStep f = diverged();
+    f.residual = 3.5e-9;
+    f.correction_ratio = 0.02;
+    f.displacement_tolerance = 1e-8;
+    f.floor = {5e-4, 1e-5, 1.0}; // no round-off advice for a residual that was met
+    CHECK(diagnose_failed_step(f).reason ==
+          "no convergence in step 12 at load factor 0.75 (diverged with the increment cut to 1e-06; the residual "
+          "ended at 3.5e-09 of the load, within residual_tolerance 1e-06, but the corrections stayed at 0.02 of the "
+          "increment, above displacement_tolerance 1e-08)");
+    f.settled = false;
+    CHECK(diagnose_failed_step(f).reason ==
+          "no convergence in step 12 at load factor 0.75 (diverged with the increment cut to 1e-06; the residual "
+          "ended at 3.5e-09 of the load, within residual_tolerance 1e-06, but contact, hinges or fibres kept changing "
+          "state between iterations)");
+}

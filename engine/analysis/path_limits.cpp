@@ -87,6 +87,9 @@ std::optional<StopReason> PathFollowing::after_failure(const NewtonResult& outco
     failed.increment = h;
     failed.residual = outcome.residual;
     failed.tolerance = a.residual_tolerance;
+    failed.correction_ratio = outcome.correction_ratio;
+    failed.displacement_tolerance = a.displacement_tolerance;
+    failed.settled = outcome.settled;
     failed.tolerance_follows_floor = a.residual_tolerance_follows_floor;
     failed.floor = floor_at_failure;
     return diagnose_failed_step(failed);

@@ -23,8 +23,17 @@ StopReason diagnose_failed_step(const FailedStep& f) {
         why << "no convergence in step " << f.step << " at load factor " << f.load_factor << " (" << to_string(f.failure);
         if (f.hopeless) why << ", no smaller increment can help";
         else why << " with the increment cut to " << std::abs(f.increment);
-        why << "; the residual ended at " << f.residual << " of the load, residual_tolerance " << f.tolerance << ")";
-        if (!f.tolerance_follows_floor && f.floor.total >= 0.1 * f.tolerance) {
+        // The verdict names the criterion that failed: a residual within its tolerance did not.
+        const bool residual_met = f.residual <= f.tolerance;
+        why << "; the residual ended at " << f.residual << " of the load";
+        if (!residual_met) why << ", residual_tolerance " << f.tolerance << ")";
+        else if (!f.settled)
+            why << ", within residual_tolerance " << f.tolerance
+                << ", but contact, hinges or fibres kept changing state between iterations)";
+        else
+            why << ", within residual_tolerance " << f.tolerance << ", but the corrections stayed at " << f.correction_ratio
+                << " of the increment, above displacement_tolerance " << f.displacement_tolerance << ")";
+        if (!residual_met && !f.tolerance_follows_floor && f.floor.total >= 0.1 * f.tolerance) {
             why << ": round-off alone leaves about " << f.floor.total
                 << " of the load out of balance in this model (its stiffest terms times the rounding "
                    "of its displacements), so the tolerance cannot be met; ";

@@ -25,6 +25,9 @@ struct FailedStep {
     double increment = 0.0;       // the increment it was cut to
     double residual = 0.0;        // relative, where Newton ended
     double tolerance = 0.0;       // the residual tolerance
+    double correction_ratio = 0.0; // the last correction over the increment, where Newton ended
+    double displacement_tolerance = 0.0;
+    bool settled = true;          // the active sets agreed with the state where Newton ended
     bool tolerance_follows_floor = false;
     RoundOffFloor floor;          // at the failed state
 };

@@ -138,6 +138,8 @@ NewtonResult solve_increment(NewtonProblem& problem, IncrementConstraint& constr
             correction_floor = 1e-9 * problem.state_norm();
             const bool small_correction = within(last_correction, 1.0);
             const bool settled = problem.settled();
+            result.correction_ratio = last_correction / std::max(result.increment.norm(), 1e-300);
+            result.settled = settled;
             in_equilibrium = settled && relative <= tolerance;
             // Equilibrium with frozen active sets that the state contradicts: let them be
             // re-decided once, then freeze again (an active-set iteration).

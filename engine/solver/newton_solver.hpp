@@ -88,6 +88,11 @@ struct NewtonResult {
     int iterations = 0;
     double residual = 0.0; // relative, at the last evaluation
     double tolerance = 0.0; // the residual tolerance at the last evaluation (above the given one where it follows the floor)
+    // Where it ended: the last correction over the increment (the displacement criterion), and
+    // whether the active sets (contact, hinges, fibres) agreed with the state. A step that fails
+    // with its residual within the tolerance failed on one of these.
+    double correction_ratio = 0.0;
+    bool settled = true;
     Eigen::VectorXd increment; // Δx of the increment
     double load_change = 0.0;  // Δλ
     int negative_pivots_seen = 0; // most negative pivots of any tangent factorised
