@@ -210,14 +210,10 @@ int run_command(const Args& args) {
     const bool quiet = vm.count("quiet") > 0;
     Progress progress("solving", 20, "steps");
     auto track = [&](const StepResult& r) {
-        report.last = final_state(model, r);
+        report.note(r);
         if (r.critical) {
             progress.finish();
             std::cerr << "plastica: " << scene_file << ": " << critical_point_message(*r.critical) << "\n";
-        }
-        if (r.load > report.peak_load) {
-            report.peak_load = r.load;
-            report.peak_load_displacement = r.control_displacement;
         }
         if (quiet) return;
         const double done = share_done(model, r);

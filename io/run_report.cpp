@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 
 namespace plastica {
@@ -125,11 +126,58 @@ std::string to_json(const RunReport& r) {
         j["final"]["reactions"] = reactions;
     }
     j["peak"] = {{"load", r.peak_load}, {"control_displacement", r.peak_load_displacement}};
+    if (!r.model->self_contact.empty()) {
+        // The walls meet: what follows is the contact penalty's (the peak above is before it).
+        Json contact = {{"closed", r.self_contact.first_step > 0}};
+        if (r.self_contact.first_step > 0) {
+            contact["first_step"] = r.self_contact.first_step;
+            contact["load"] = r.self_contact.load;
+            contact["control_displacement"] = r.self_contact.control_displacement;
+            contact["final_force"] = r.self_contact.last_force;
+            if (r.last.load != 0.0) contact["final_share_of_load"] = r.self_contact.last_force / std::abs(r.last.load);
+        }
+        j["self_contact"] = contact;
+    }
+    if (!r.model->report.load_at.empty()) {
+        Json at = Json::array();
+        for (std::size_t k = 0; k < r.model->report.load_at.size(); ++k) {
+            Json one = {{"control_displacement", r.model->report.load_at[k]}};
+            one["load"] = k < r.load_at.size() && r.load_at[k] ? Json(*r.load_at[k]) : Json(nullptr); // null: not reached
+            at.push_back(one);
+        }
+        j["load_at"] = at;
+    }
     j["model"] = describe_model(*r.model);
     Json seconds = Json::object();
     for (const auto& [stage, s] : r.stage_seconds) seconds[stage] = s;
     j["seconds"] = seconds;
     return j.dump(2) + "\n";
+}
+
+void RunReport::note(const StepResult& r) {
+    last = final_state(*model, r);
+    if (!model->self_contact.empty() && !r.surface_contacts.empty()) {
+        if (self_contact.first_step == 0) self_contact = {r.step, r.load, r.control_displacement, 0.0};
+        double force = 0.0;
+        for (const SurfaceContactResult& c : r.surface_contacts) force += std::hypot(c.force[0], c.force[1]);
+        self_contact.last_force = model->report.load_scale * force;
+    } else if (!model->self_contact.empty()) {
+        self_contact.last_force = 0.0;
+    }
+    if (r.load > peak_load && self_contact.first_step == 0) {
+        peak_load = r.load;
+        peak_load_displacement = r.control_displacement;
+    }
+    load_at.resize(model->report.load_at.size());
+    for (std::size_t k = 0; k < load_at.size(); ++k) {
+        const double target = model->report.load_at[k];
+        const double from = previous_displacement, to = r.control_displacement;
+        if (load_at[k] || !((from - target) * (to - target) <= 0.0) || from == to) continue;
+        const double t = (target - from) / (to - from);
+        load_at[k] = previous_load + t * (r.load - previous_load);
+    }
+    previous_load = r.load;
+    previous_displacement = r.control_displacement;
 }
 
 void write_run_report(const std::string& path, const RunReport& report) {

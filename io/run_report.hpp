@@ -5,6 +5,7 @@
 #include "analysis/support_reactions.hpp"
 #include "model/model.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +26,14 @@ struct FinalState {
 };
 FinalState final_state(const Model& model, const StepResult& step);
 
+// Where [[self_contact]] first closed: in a flattening test the walls meet there, and the load
+// beyond is the penalty's, not the crushing curve's.
+struct SelfContactMarks {
+    int first_step = 0; // 0: never closed
+    double load = 0.0, control_displacement = 0.0;
+    double last_force = 0.0; // the pairs' force at the last step, as the reported load counts it (load_scale)
+};
+
 struct RunReport {
     std::string scene_file;
     std::vector<std::pair<std::string, std::string>> overrides; // --set KEY=VALUE, in order
@@ -32,9 +41,15 @@ struct RunReport {
     RunSummary summary;
     std::vector<std::pair<std::string, double>> stage_seconds;
     FinalState last;        // of the last converged step
-    double peak_load = 0.0; // largest reported load
+    double peak_load = 0.0; // largest reported load (before self-contact closed, where the scene has it)
     double peak_load_displacement = 0.0;
+    std::vector<std::optional<double>> load_at; // at ReportSpec::load_at, where reached
+    SelfContactMarks self_contact;
     std::vector<std::string> drawing_notes; // drawing options that could not act, and why
+    double previous_load = 0.0, previous_displacement = 0.0; // the step before, for load_at
+
+    // Takes in a converged step: the last state, the peak, the loads at given displacements.
+    void note(const StepResult& step);
 };
 
 std::string to_json(const RunReport& report);

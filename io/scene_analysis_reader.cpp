@@ -267,6 +267,15 @@ void SceneBuilder::read_report(TomlTableReader& top) {
     model_.report.displacement_label = r.string_or("displacement_label", model_.report.displacement_label);
     model_.report.exact = r.choice_or("exact", "");
     if (r.has("mirror_x")) model_.report.mirror_x = r.number("mirror_x");
+    if (const toml::array* at = r.array("load_at")) {
+        for (const toml::node& item : *at) {
+            const std::optional<double> value = item.value<double>();
+            if (!value || !std::isfinite(*value))
+                r.fail("load_at", "expected a list of numbers: control displacements, in the control's units");
+            model_.report.load_at.push_back(*value);
+        }
+        if (model_.report.load_at.size() > 100) r.fail("load_at", "expected at most 100 displacements");
+    }
     for (const auto& [key, unit] : {std::pair{"length_unit", &model_.report.length_unit}, std::pair{"force_unit", &model_.report.force_unit}}) {
         *unit = r.string_or(key, *unit); // [units] names them unless [report] relabels
         if (unit->size() > 16 || unit->find_first_of("\n\r\t") != std::string::npos)

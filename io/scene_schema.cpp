@@ -553,6 +553,10 @@ TableSpec report_table_spec() {
         text("force_unit").follows("`[units]`'s")
             .about("the scene's force unit for pictures: the axes, the status line, colour bars and arrow values carry them, "
                    "moments as force·length, a pressure as force/length; the load factor has none"),
+        other("load_at", "list of numbers")
+            .about("control displacements (in the control's units, numbers) at which run.json gives the load under "
+                   "`load_at`, interpolated between the steps where the path first passes each (a flattening test's "
+                   "travel: δ/D = 0.5 as 0.5 D)"),
         number("mirror_x", dimension::length)
             .about("the scene is half of a structure symmetric about the line x = mirror_x: pictures draw the mirrored half too "
                    "(results are unchanged); every node must lie on one side of the line"),

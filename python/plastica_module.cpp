@@ -107,11 +107,7 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
         report.summary = analysis.run({[&](const StepResult& r) {
             show(r, false);
             run->curve_csv += curve_row(run->model, r);
-            report.last = final_state(run->model, r);
-            if (r.load > report.peak_load) {
-                report.peak_load = r.load;
-                report.peak_load_displacement = r.control_displacement;
-            }
+            report.note(r);
             run->steps.push_back(r);
         }}, control);
         if (!run->steps.empty()) show(run->steps.back(), true);

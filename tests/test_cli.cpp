@@ -966,3 +966,35 @@ TEST_CASE("A run in time writes its time and energies, a PVD in model time, and 
         CHECK(ink(out / picture) > 0.02);
     }
 }
+
+TEST_CASE("A flattening test reports the load at given travels and where its walls meet, apart from the crushing peak", "[cli][report]") {
+    // models/gallery/steel_pipe_flattened.toml asks for the load at δ = 50, 100, 150 (δ/D =
+    // 0.25, 0.5, 0.75) and has [[self_contact]]: the peak is the crushing curve's, before the
+    // walls meet; the force beyond is the contact penalty's and is reported as such.
+    const fs::path out = scratch("flattened");
+    const Result r = command("run " + model("gallery/steel_pipe_flattened.toml") + " -o " + out.string() + " --no-render -q");
+    REQUIRE(r.code == 0);
+    const CsvTable curve = read_csv(out / "curve.csv");
+    const nlohmann::json run = read_json(out / "run.json");
+    REQUIRE(run["load_at"].size() == 3u);
+    for (const nlohmann::json& at : run["load_at"]) {
+        const double target = at["control_displacement"].get<double>();
+        // The load between the two steps that straddle the travel, on their chord.
+        std::size_t k = 1;
+        while (k < curve.rows.size() && curve.at(k, "control_displacement") < target) ++k;
+        REQUIRE(k < curve.rows.size());
+        const double d0 = curve.at(k - 1, "control_displacement"), d1 = curve.at(k, "control_displacement");
+        const double p0 = curve.at(k - 1, "load"), p1 = curve.at(k, "load");
+        CAPTURE(target);
+        CHECK(at["load"].get<double>() == Approx(p0 + (target - d0) / (d1 - d0) * (p1 - p0)).epsilon(1e-9));
+    }
+    const nlohmann::json& contact = run["self_contact"];
+    REQUIRE(contact["closed"] == true);
+    // The walls meet near a travel of 2R − h = 195 (the plates touch the walls' centre lines).
+    CHECK(contact["control_displacement"].get<double>() > 185.0);
+    CHECK(run["peak"]["control_displacement"].get<double>() < contact["control_displacement"].get<double>());
+    CHECK(run["peak"]["load"].get<double>() < 0.2 * run["final"]["load"].get<double>());
+    const double share = contact["final_share_of_load"].get<double>();
+    CHECK(share > 0.0);
+    CHECK(share <= 1.0);
+}

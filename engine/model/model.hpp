@@ -260,6 +260,9 @@ struct ReportSpec {
     std::string exact;  // a closed form this scene has ("cantilever_tip_load"), for `plastica study`
     std::optional<double> mirror_x; // a half model symmetric about x = mirror_x: pictures show both halves
     std::string length_unit, force_unit; // names for pictures ("mm", "kN"); empty: none given
+    // Control displacements at which run.json gives the load, interpolated along the path (a
+    // flattening standard's travel, δ/D = 0.5 as δ = 0.5 D), each where the path first reaches it.
+    std::vector<double> load_at;
 };
 
 struct Model {
