@@ -548,7 +548,7 @@ TEST_CASE("A sampled sweep draws the distribution of its peak load", "[cli][swee
     CHECK(s.code == 0);
     CHECK(fs::exists(dir / "sample.txt"));
     CHECK(fs::file_size(dir / "peak_distribution.png") > 20000);
-    // The plan is the seed's: the same values again.
+    // The plan follows from --seed: the same values again.
     std::ifstream plan(dir / "plan.csv");
     std::stringstream first;
     first << plan.rdbuf();

@@ -61,7 +61,7 @@ TEST_CASE("Kinematic hardening: slope b·E past yield, an elastic range of 2 fy 
     CHECK(jump->set_trial_strain(3.0 * ey).stress == Approx(1.04 * fy).epsilon(1e-12));
 }
 
-TEST_CASE("With b = 0 the hardening law is the seed's bilinear law, step for step", "[material]") {
+TEST_CASE("With b = 0 the hardening law is the bilinear law, step for step", "[material]") {
     // Both with a residual stress of 30 and an ultimate strain of 0.05.
     SteelSpec failing = hardening(0.0);
     failing.ultimate_strain = 0.05;

@@ -1,6 +1,6 @@
 // Refined plastic hinges against plastic theory (Neal, "The Plastic Methods of Structural
 // Analysis", 1977; Liew, White & Chen, J. Struct. Eng. 119(11), 1993): collapse loads of
-// beams and a portal frame, elastic unloading, and the inelastic ring of the seed.
+// beams and a portal frame, elastic unloading, and the inelastic ring (models/ring_inelastic.toml).
 #include "analysis_helpers.hpp"
 #include "scene_overrides.hpp"
 #include "plastic_beam_scenes.hpp"
