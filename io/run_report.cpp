@@ -156,13 +156,12 @@ std::string to_json(const RunReport& r) {
 
 void RunReport::note(const StepResult& r) {
     last = final_state(*model, r);
-    if (!model->self_contact.empty() && !r.surface_contacts.empty()) {
-        if (self_contact.first_step == 0) self_contact = {r.step, r.load, r.control_displacement, 0.0};
+    if (!model->self_contact.empty()) {
+        if (!r.surface_contacts.empty() && self_contact.first_step == 0)
+            self_contact = {r.step, r.load, r.control_displacement, 0.0};
         double force = 0.0;
         for (const SurfaceContactResult& c : r.surface_contacts) force += std::hypot(c.force[0], c.force[1]);
         self_contact.last_force = model->report.load_scale * force;
-    } else if (!model->self_contact.empty()) {
-        self_contact.last_force = 0.0;
     }
     if (r.load > peak_load && self_contact.first_step == 0) {
         peak_load = r.load;

@@ -29,30 +29,32 @@ double CapacityCurve::bound(double N) const {
     if (N_.size() < 2 || N < N_.front() || N > N_.back()) return 0.0;
     if (N == N_.front()) return M_.front();
     if (N == N_.back()) return M_.back();
-    const std::size_t k = static_cast<std::size_t>(std::upper_bound(N_.begin(), N_.end(), N) - N_.begin()) - 1;
-    const double h = N_[k + 1] - N_[k];
-    const double t = (N - N_[k]) / h;
-    const double t2 = t * t, t3 = t2 * t;
-    return (2 * t3 - 3 * t2 + 1) * M_[k] + (t3 - 2 * t2 + t) * slope_[k] * h + (-2 * t3 + 3 * t2) * M_[k + 1] + (t3 - t2) * slope_[k + 1] * h;
+    return hermite(N).moment;
 }
 
 CapacityValue CapacityCurve::at(double N) const {
-    CapacityValue v;
     if (N_.size() < 2 || N <= N_.front() || N >= N_.back()) {
         // Outside the squash range: no moment; the slope continues the end side so that a
         // linearisation there still points back inside.
+        CapacityValue v;
         if (N_.size() >= 2) v.slope = N <= N_.front() ? slope_.front() : slope_.back();
         return v;
     }
+    CapacityValue v = hermite(N);
+    v.moment = std::max(v.moment, 0.0);
+    return v;
+}
+
+CapacityValue CapacityCurve::hermite(double N) const {
     const std::size_t k = static_cast<std::size_t>(std::upper_bound(N_.begin(), N_.end(), N) - N_.begin()) - 1;
     const double h = N_[k + 1] - N_[k];
     const double t = (N - N_[k]) / h;
     const double m0 = M_[k], m1 = M_[k + 1], d0 = slope_[k] * h, d1 = slope_[k + 1] * h;
     const double t2 = t * t, t3 = t2 * t;
+    CapacityValue v;
     v.moment = (2 * t3 - 3 * t2 + 1) * m0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * m1 + (t3 - t2) * d1;
     v.slope = ((6 * t2 - 6 * t) * m0 + (3 * t2 - 4 * t + 1) * d0 + (-6 * t2 + 6 * t) * m1 + (3 * t2 - 2 * t) * d1) / h;
     v.curvature = ((12 * t - 6) * m0 + (6 * t - 4) * d0 + (-12 * t + 6) * m1 + (6 * t - 2) * d1) / (h * h);
-    v.moment = std::max(v.moment, 0.0);
     return v;
 }
 

@@ -31,6 +31,9 @@ public:
     double highest() const { return N_.empty() ? 0.0 : N_.back(); }
 
 private:
+    // The cubic through the breakpoints, unclamped, for N strictly inside the squash range.
+    CapacityValue hermite(double N) const;
+
     std::vector<double> N_, M_, slope_;
 };
 
