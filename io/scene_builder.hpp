@@ -85,6 +85,7 @@ private:
     void read_prescribed(TomlTableReader& top);
     void read_foundations(TomlTableReader& top);
     std::vector<std::array<double, 2>> bed_directions(TomlTableReader& r, const std::vector<int>& nodes);
+    void add_base_edges(TomlTableReader& r, const std::map<int, int>& spring_of, double ky);
 
     // Stages, analysis, control and report (scene_analysis_reader.cpp).
     void read_stages(TomlTableReader& top);

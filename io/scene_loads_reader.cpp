@@ -8,8 +8,11 @@
 
 #include "material/material_registry.hpp"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace plastica::detail {
@@ -167,7 +170,15 @@ void SceneBuilder::read_foundations(TomlTableReader& top) {
             }
         }
         // Springs at nodes (force per length, moment per radian) or per unit length of member.
-        const bool per_length = r.boolean("per_length");
+        const bool along_members = r.choice("acts_on") == "members";
+        if (along_members) {
+            if (!unilateral) r.fail("acts_on", "only a unilateral base acts along the members (kind = \"unilateral\")");
+            for (const char* key : {"halve_at", "kx", "krot", "per_length"})
+                if (r.has(key))
+                    r.fail(key, std::string("a base acting along the members takes 'ky' per unit length alone; '") + key +
+                                    "' belongs to springs at nodes (acts_on = \"nodes\")");
+        }
+        const bool per_length = along_members || r.boolean("per_length");
         const Dimension k_dimension = per_length ? dimension::stress : dimension::force_per_length;
         const Dimension krot_dimension = per_length ? dimension::force : dimension::moment;
         const double kx = r.number("kx", k_dimension), ky = r.number("ky", k_dimension);
@@ -210,8 +221,11 @@ void SceneBuilder::read_foundations(TomlTableReader& top) {
                 if (r.has(key)) r.fail(key, "a base line belongs to a unilateral foundation (kind = \"unilateral\")");
         }
         const std::vector<std::array<double, 2>> directions = tensionless ? bed_directions(r, nodes) : std::vector<std::array<double, 2>>{};
+        std::map<int, int> spring_of; // node → its spring of this foundation
         for (std::size_t k = 0; k < nodes.size(); ++k) {
             const int n = nodes[k];
+            if (along_members && spring_of.count(n)) continue; // selected twice ('on' and 'at')
+            spring_of[n] = static_cast<int>(model_.springs.size());
             FoundationSpring s;
             s.node = n;
             const double f = scale[n] * tributary[n];
@@ -220,9 +234,59 @@ void SceneBuilder::read_foundations(TomlTableReader& top) {
             s.anchored = tensionless;
             if (tensionless) s.direction = directions[k];
             s.base = base_index;
+            s.along_members = along_members;
             model_.springs.push_back(s);
         }
+        if (along_members) add_base_edges(r, spring_of, ky);
         r.finish();
+    }
+}
+
+// The members whose both ends a base acting along the members holds, each with its penalty per
+// unit length and the initial direction of its centre line at both nodes: where a neighbour in
+// the selection continues it within 30° (the chords of an arc), the mean of the two chords, so
+// the curve the contact sees is the arc's; else its own chord.
+void SceneBuilder::add_base_edges(TomlTableReader& r, const std::map<int, int>& spring_of, double ky) {
+    std::vector<std::size_t> bearing;
+    std::vector<std::vector<std::size_t>> at_node(model_.nodes.size());
+    for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+        const ElementSpec& el = model_.elements[e];
+        if (!spring_of.count(el.node_i) || !spring_of.count(el.node_j)) continue;
+        bearing.push_back(e);
+        at_node[el.node_i].push_back(e);
+        at_node[el.node_j].push_back(e);
+    }
+    if (bearing.empty()) r.fail("acts_on", "no member has both its ends among the selected nodes");
+    auto chord = [&](std::size_t e) {
+        const ElementSpec& el = model_.elements[e];
+        const Node &a = model_.nodes[el.node_i], &b = model_.nodes[el.node_j];
+        return Eigen::Vector2d(b.x - a.x, b.y - a.y);
+    };
+    // The direction at `node` of member e (pointing from i to j), continued by its neighbour.
+    auto tangent_at = [&](std::size_t e, int node) {
+        const Eigen::Vector2d own = chord(e).normalized();
+        if (at_node[node].size() != 2) return own;
+        const std::size_t other = at_node[node][0] == e ? at_node[node][1] : at_node[node][0];
+        const ElementSpec& o = model_.elements[other];
+        const ElementSpec& el = model_.elements[e];
+        // The neighbour runs on through the node in e's direction where it ends where e starts.
+        const bool same_sense = (o.node_j == node) == (el.node_i == node);
+        const Eigen::Vector2d continued = (same_sense ? 1.0 : -1.0) * chord(other).normalized();
+        if (own.dot(continued) < std::cos(M_PI / 6.0)) return own;
+        return Eigen::Vector2d((own + continued).normalized());
+    };
+    for (std::size_t e : bearing) {
+        const ElementSpec& el = model_.elements[e];
+        BaseEdge edge;
+        edge.spring = {spring_of.at(el.node_i), spring_of.at(el.node_j)};
+        edge.stiffness = ky;
+        edge.length = chord(e).norm();
+        for (int end = 0; end < 2; ++end) {
+            const Eigen::Vector2d t = tangent_at(e, end == 0 ? el.node_i : el.node_j);
+            edge.tangent_angle[static_cast<std::size_t>(end)] = std::atan2(t[1], t[0]);
+        }
+        edge.straight = el.released[0] || el.released[1];
+        model_.base_edges.push_back(edge);
     }
 }
 

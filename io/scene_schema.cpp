@@ -419,6 +419,12 @@ TableSpec foundation_table_spec() {
         number("krot", dimension::moment).at_least(0.0).fallback(0.0)
             .dimension_follows("a moment per radian; with `per_length` a force").about("rotational spring stiffness"),
         flag("per_length", false).about("stiffness per unit length, times the node's tributary length"),
+        one_of("acts_on", {"nodes", "members"}).fallback(std::string("nodes"))
+            .about("unilateral only: `nodes`: a spring at each selected node meets the base on its own, so a contact zone "
+                   "grows node by node and the load jumps as each one lands; `members`: the base presses each member whose "
+                   "two ends are selected over its exact overlap with the line (the centre line the cubic through the nodes "
+                   "and their tangents), `ky` is then a penalty per unit length (a stress) and the force grows smoothly as "
+                   "the zone spreads (engine/contact/member_overlap.hpp); no `halve_at`, `kx`, `krot` or `per_length`"),
         point("base_point", dimension::length).follows("the lowest selected node")
             .about("unilateral: a point of the base line. Foundations on the same line share it; another line is another base "
                    "(a ring between two plates: one facing up, one facing down)"),

@@ -386,10 +386,11 @@ std::vector<StabilityCase> robustness_cases() {
     for (const double r_over_h : {10.0, 20.0, 40.0})
         for (const char* scheme : {"load_control", "displacement_control", "arc_length"}) {
             const bool by_displacement = std::string(scheme) == "displacement_control";
-            const double h = 100.0 / r_over_h, k = 1e4 * 210000.0 * h * h * h / 12.0 / 1e6;
+            // The plates act along the members: 1e4·EI/R³ spread over the element length πR/50.
+            const double h = 100.0 / r_over_h, k = 1e4 * 210000.0 * h * h * h / 12.0 / 1e6 / (M_PI * 100.0 / 50.0);
             std::vector<std::pair<std::string, std::string>> edits{{"h = 5.0", "h = " + std::to_string(h)},
-                                                                   {"ky = \"21875 N/mm\"", "ky = " + std::to_string(k)},
-                                                                   {"ky = \"21875 N/mm\"", "ky = " + std::to_string(k)}};
+                                                                   {"ky = \"3482 MPa\"", "ky = " + std::to_string(k)},
+                                                                   {"ky = \"3482 MPa\"", "ky = " + std::to_string(k)}};
             if (by_displacement)
                 edits.insert(edits.end(), {{"scheme = \"load_control\"", "scheme = \"displacement_control\""},
                                            {"target_load_factor = 130.0", "target_displacement = 130.0"}});

@@ -170,6 +170,8 @@ TEST_CASE("Every kind of scene mistake gives a located message", "[scene][errors
         {"zero line load", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"all\"\nwy = 0.0"), "a distributed load needs a non-zero 'wx', 'wy', 'pressure' or 'gravity'", 19},
         {"negative density", replaced("E = 1000.0", "E = 1000.0\ndensity = -1.0"), "'material[1].density': expected a number of at least 0, got -1", 6},
         {"line load without a control point", replaced("[[load]]\nat = [1.0, 0.0]\nfy = -1.0", "[[distributed_load]]\non = \"all\"\nwy = -1.0"), "missing 'control_at': a scene loaded only by [[distributed_load]]s", 22},
+        {"a bilateral foundation acting along the members", good + "[[foundation]]\non = \"all\"\nky = 1.0\nacts_on = \"members\"\n", "'foundation[1].acts_on': only a unilateral base acts along the members", 29},
+        {"a base along the members halved at a node", good + "[[foundation]]\nkind = \"unilateral\"\non = \"all\"\nky = 1.0\nacts_on = \"members\"\nhalve_at = [[0.0, 0.0]]\n", "'foundation[1].halve_at': a base acting along the members takes 'ky' per unit length alone", 31},
         {"direction of a bilateral foundation", good + "[[foundation]]\non = \"all\"\nky = 1.0\ndirection = [0.0, 1.0]\n", "'foundation[1].direction': a direction belongs to a tensionless bed", 29},
         {"tensionless bed with kx", good + "[[foundation]]\nkind = \"tensionless\"\non = \"all\"\nky = 1.0\nkx = 1.0\n", "'foundation[1].kx': a tensionless bed pushes along its 'direction' only", 30},
         {"stage without a stop", good + "[[stage]]\nincrement = 0.1\n", "'stage[1]': missing a stop", 26},

@@ -30,10 +30,17 @@ void FoundationComponent::append_blocks(std::vector<std::vector<int>>& blocks) c
         for (int d = 0; d < dofs_per_node; ++d) b.push_back(equation_[dofs_per_node * foundation_.spring(s).node + d]);
         blocks.push_back(std::move(b));
     }
+    for (std::size_t e = 0; e < foundation_.edge_count(); ++e) {
+        std::vector<int> b;
+        for (int spring : foundation_.edge(e).spring)
+            for (int d = 0; d < dofs_per_node; ++d) b.push_back(equation_[dofs_per_node * foundation_.spring(spring).node + d]);
+        blocks.push_back(std::move(b));
+    }
 }
 
 void FoundationComponent::assemble(BlockAssembler& assembler, std::size_t first) const {
     for (std::size_t s = 0; s < foundation_.size(); ++s) assembler.add(first + s, foundation_.tangent(s));
+    for (std::size_t e = 0; e < foundation_.edge_count(); ++e) assembler.add(first + foundation_.size() + e, foundation_.edge_tangent(e));
 }
 
 Eigen::VectorXd FoundationComponent::platen_force(int size) const {
@@ -57,7 +64,6 @@ void FoundationComponent::report(const Eigen::VectorXd& u, bool, StepResult& out
     out.springs.resize(foundation_.size());
     out.contact_count = 0;
     out.base_reaction = 0.0;
-    std::vector<bool> in_contact(nodes_.size(), false);
     for (std::size_t s = 0; s < foundation_.size(); ++s) {
         const SpringState& st = foundation_.states()[s];
         SpringResult& r = out.springs[s];
@@ -69,17 +75,27 @@ void FoundationComponent::report(const Eigen::VectorXd& u, bool, StepResult& out
         if (st.unilateral && st.active) {
             ++out.contact_count;
             out.base_reaction += st.force.head<2>().norm();
-            in_contact[st.node] = true;
         }
     }
-    // The length of the members whose both ends touch a base.
+    // The length of the members in contact: whose both ends touch a node-wise base, and the
+    // overlapping share of those that bear along their length.
+    auto current_length = [&](int i, int j) {
+        const double dx = nodes_[j].x + u[3 * j] - nodes_[i].x - u[3 * i];
+        const double dy = nodes_[j].y + u[3 * j + 1] - nodes_[i].y - u[3 * i + 1];
+        return std::hypot(dx, dy);
+    };
     out.contact_length = 0.0;
-    for (const ElementSpec& e : elements_) {
-        if (!in_contact[e.node_i] || !in_contact[e.node_j]) continue;
-        const double dx = nodes_[e.node_j].x + u[3 * e.node_j] - nodes_[e.node_i].x - u[3 * e.node_i];
-        const double dy = nodes_[e.node_j].y + u[3 * e.node_j + 1] - nodes_[e.node_i].y - u[3 * e.node_i + 1];
-        out.contact_length += std::hypot(dx, dy);
+    for (std::size_t e = 0; e < foundation_.edge_count(); ++e) {
+        const std::array<int, 2>& s = foundation_.edge(e).spring;
+        out.contact_length += foundation_.edge_fraction(e) * current_length(foundation_.spring(s[0]).node, foundation_.spring(s[1]).node);
     }
+    std::vector<bool> in_contact(nodes_.size(), false);
+    for (std::size_t s = 0; s < foundation_.size(); ++s) {
+        const SpringState& st = foundation_.states()[s];
+        if (st.unilateral && st.active && !foundation_.spring(s).along_members) in_contact[st.node] = true;
+    }
+    for (const ElementSpec& e : elements_)
+        if (in_contact[e.node_i] && in_contact[e.node_j]) out.contact_length += current_length(e.node_i, e.node_j);
 }
 
 } // namespace plastica

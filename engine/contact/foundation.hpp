@@ -5,11 +5,14 @@
 // base is held): f = k·g·n, tangent k·n nᵀ. An anchored unilateral spring (a tensionless
 // Winkler bed) measures g = u·n from the node's initial position along its own direction n.
 // The active set is re-read from the current positions at every evaluation; the driver
-// decides when it has settled.
+// decides when it has settled. A base that acts along the members (BaseEdge) presses each
+// member by its exact overlap with the line (contact/line_overlap.hpp) and hands the shares to
+// the springs of its end nodes: a force continuous in the positions, with no active set.
 #pragma once
 
 #include <cmath>
 
+#include "contact/member_overlap.hpp"
 #include "load/pattern_factors.hpp"
 #include "model/model.hpp"
 
@@ -54,6 +57,14 @@ public:
     // ∂(internal force of spring k)/∂λ: nonzero where an active spring's base moves.
     Eigen::Vector3d load_rate(std::size_t k) const;
 
+    // The members bearing along their length: their springs' indices, and the tangent (6×6,
+    // the two nodes' DOFs) and the overlapping share of the length at the last evaluation.
+    std::size_t edge_count() const { return edges_.size(); }
+    const BaseEdge& edge(std::size_t e) const { return edges_[e]; }
+    Eigen::Matrix<double, 6, 6> edge_tangent(std::size_t e) const;
+    double edge_fraction(std::size_t e) const { return overlaps_[e].fraction; }
+    double edge_force(std::size_t e) const { return overlaps_[e].resultant; }
+
     int active_contacts() const;
 
     // A new stage: each base moves with λ if its pattern is driven, else stays where its held
@@ -64,7 +75,12 @@ private:
     // The unit direction a unilateral spring pushes: its own (anchored) or the base's normal.
     Eigen::Vector2d normal_of(const FoundationSpring& spring) const;
 
+    void evaluate_edges(const Eigen::VectorXd& u, double load_factor);
+
     std::vector<FoundationSpring> springs_;
+    std::vector<BaseEdge> edges_;
+    std::vector<MemberOverlap> overlaps_;     // per edge, at the last evaluation
+    std::vector<Eigen::Vector3d> edge_rates_; // per spring: its edges' ∂(internal force)/∂λ
     std::vector<Node> nodes_;
     std::vector<BaseLine> reference_bases_; // as the model gives them (normals of unit length)
     std::vector<BaseLine> bases_;           // in the current stage (base_in_stage)
@@ -72,6 +88,8 @@ private:
     bool changed_ = false;
     double undecided_force_ = 0.0;
     bool undecided(const SpringState& st, const FoundationSpring& sp) const { return sp.ky * std::abs(st.gap) <= undecided_force_; }
+    // Whether a spring switches on and off by itself (at its node, not along members).
+    static bool switches(const FoundationSpring& sp) { return sp.unilateral && !sp.along_members; }
 };
 
 } // namespace plastica

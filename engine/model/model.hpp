@@ -170,6 +170,17 @@ struct FoundationSpring {
     bool anchored = false;                       // unilateral, against the node's initial position
     std::array<double, 2> direction{0.0, 1.0};   // anchored: the unit direction the bed pushes
     int base = 0;                                // unilateral, not anchored: its base line in Model::bases
+    bool along_members = false;                  // unilateral: the base acts along the members (BaseEdge), not at the node; ky is then the tributary share, for scales only
+};
+
+// A member pressed onto a rigid base along its length (contact/member_overlap.hpp): the springs
+// of its end nodes on that base carry the forces of the overlap.
+struct BaseEdge {
+    std::array<int, 2> spring{0, 0};          // indices into Model::springs, along_members
+    double stiffness = 0.0;                   // the penalty per unit length
+    double length = 0.0;                      // the member's initial length
+    std::array<double, 2> tangent_angle{0.0, 0.0}; // the centre line's initial direction at i and j, from i toward j
+    bool straight = false;                    // a released end: the chord stands for the member
 };
 
 // transient: time integration (engine/dynamics/), the others path following.
@@ -281,6 +292,7 @@ struct Model {
     std::vector<FoundationSpring> springs;
     std::vector<SelfContactSpec> self_contact;
     std::vector<BaseLine> bases; // the rigid base lines of unilateral springs (FoundationSpring::base)
+    std::vector<BaseEdge> base_edges; // members that bear on a base along their length
     std::vector<std::string> patterns{"main"}; // load pattern names, "main" first
     AnalysisSpec analysis;
     std::vector<StageSpec> stages; // after the first ([analysis]), in order
