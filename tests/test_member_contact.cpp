@@ -18,6 +18,13 @@ using namespace plastica::testing;
 
 namespace {
 
+// Replaces the one occurrence of `from` in a scene's text.
+void replace_once(std::string& text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+}
+
 // The overlap by brute force: the Hermite curve sampled at the midpoints of n pieces.
 MemberOverlap sampled_overlap(const MemberCurve& m, const Eigen::Vector2d& point, const Eigen::Vector2d& normal, double k, int n) {
     MemberOverlap out;
@@ -224,11 +231,7 @@ TEST_CASE("The elastic ring on a contact line matches linear ring theory", "[con
     // with k = 1e6 per unit length sinks by (3P/(4k·√(2R)))^(2/3) ≈ 7e-8 at this load, 1e-6 of
     // δ; 50 chords of the half ring err by about 3e-4 on the bending flexibility.
     std::string scene = scene_file_text("models/ring_elastic.toml");
-    auto replace = [&](const std::string& from, const std::string& to) {
-        const std::size_t at = scene.find(from);
-        REQUIRE(at != std::string::npos);
-        scene.replace(at, from.size(), to);
-    };
+    auto replace = [&](const std::string& from, const std::string& to) { replace_once(scene, from, to); };
     replace("ky = 1200.0\nhalve_at = [[0.0, 0.0]]\n", "ky = 1e6\nacts_on = \"members\"\n");
     replace("increment = 0.5", "increment = 0.005");
     replace("target_displacement = 100.0", "target_displacement = 0.05");
@@ -368,11 +371,7 @@ TEST_CASE("A perfectly plastic pipe flattened between plates acting along its me
     // 30 layers and the plates along the members: the walls meet (self-contact) before the plate
     // has travelled 2R − h = 195.
     std::string scene = scene_file_text("models/gallery/steel_pipe_flattened.toml");
-    auto replace = [&](const std::string& from, const std::string& to) {
-        const std::size_t at = scene.find(from);
-        REQUIRE(at != std::string::npos);
-        scene.replace(at, from.size(), to);
-    };
+    auto replace = [&](const std::string& from, const std::string& to) { replace_once(scene, from, to); };
     replace("law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n");
     replace("h = 5.0\n", "h = 5.0\nfibres = 30\n");
     replace("ky = \"21875 N/mm\"\nhalve_at = [[0.0, 0.0]]\n", "acts_on = \"members\"\nky = \"3482 MPa\"\n");
