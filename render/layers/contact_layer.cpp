@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace plastica::render {
 
@@ -42,6 +43,10 @@ public:
         struct {
             double force = 0, fx = 0, fy = 0, tail[2] = {0, 0};
         } valued; // the largest force beyond the reference
+        struct Arrow {
+            double magnitude, fx, fy, at[2];
+        };
+        std::vector<Arrow> pressed;
         for (vtkIdType i = 0; i < step->GetNumberOfPoints(); ++i) {
             if (state && state->GetComponent(i, 0) <= 0) continue;
             const double fx = force->GetComponent(i, 0), fy = force->GetComponent(i, 1);
@@ -49,13 +54,27 @@ public:
             if (magnitude <= 0) continue;
             double p[3];
             step->GetPoint(i, p);
+            pressed.push_back({magnitude, fx, fy, {p[0], p[1]}});
+        }
+        // Thinned where many nodes press: the largest forces first, each arrow at least 10 px
+        // from those drawn, so that a flattened wall's row of arrows stays a row, not a block.
+        std::sort(pressed.begin(), pressed.end(), [](const Arrow& a, const Arrow& b) { return a.magnitude > b.magnitude; });
+        std::vector<const Arrow*> drawn;
+        const double spacing = view_.pixels(10.0);
+        for (const Arrow& a : pressed) {
+            const bool crowded = std::any_of(drawn.begin(), drawn.end(), [&](const Arrow* d) {
+                return std::hypot(d->at[0] - a.at[0], d->at[1] - a.at[1]) < spacing;
+            });
+            if (crowded) continue;
+            drawn.push_back(&a);
             // A force beyond the reference (a base's penalty holding the load after landing) ends
             // at full length and says its value.
-            const double length = scale_ * std::min(magnitude, reference_);
-            const double tip[2] = {p[0] - 0.5 * view_.ribbon_width * fx / magnitude, p[1] - 0.5 * view_.ribbon_width * fy / magnitude};
-            const double tail[2] = {tip[0] - length * fx / magnitude, tip[1] - length * fy / magnitude};
+            const double length = scale_ * std::min(a.magnitude, reference_);
+            const double ux = a.fx / a.magnitude, uy = a.fy / a.magnitude;
+            const double tip[2] = {a.at[0] - 0.5 * view_.ribbon_width * ux, a.at[1] - 0.5 * view_.ribbon_width * uy};
+            const double tail[2] = {tip[0] - length * ux, tip[1] - length * uy};
             arrows_.arrow(tail, tip, view_.pixels(3.5), colour::contact_force);
-            if (magnitude > reference_ && magnitude > valued.force) valued = {magnitude, fx, fy, {tail[0], tail[1]}};
+            if (a.magnitude > reference_ && a.magnitude > valued.force) valued = {a.magnitude, a.fx, a.fy, {tail[0], tail[1]}};
         }
         // One value, the largest: a row of pressed nodes would write a row of numbers.
         if (valued.force > 0) labels_.add(valued.tail, valued.fx, valued.fy, force_text(valued.force, unit_));
