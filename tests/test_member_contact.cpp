@@ -12,17 +12,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 using namespace plastica;
 using namespace plastica::testing;
 
 namespace {
 
-// Replaces the one occurrence of `from` in a scene's text.
-void replace_once(std::string& text, const std::string& from, const std::string& to) {
-    const std::size_t at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
+// A scene file of the source tree with each `from` (found once) replaced by its `to`.
+std::string edited_scene(const std::string& relative, const std::vector<std::pair<std::string, std::string>>& edits) {
+    std::string text = scene_file_text(relative);
+    for (const auto& [from, to] : edits) {
+        const std::size_t at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+    }
+    return text;
 }
 
 // The overlap by brute force: the Hermite curve sampled at the midpoints of n pieces.
@@ -230,12 +236,9 @@ TEST_CASE("The elastic ring on a contact line matches linear ring theory", "[con
     // Castigliano: δ = (π/4 − 2/π)·P·R³/EI for the ring pinched by two loads P. Line contact
     // with k = 1e6 per unit length sinks by (3P/(4k·√(2R)))^(2/3) ≈ 7e-8 at this load, 1e-6 of
     // δ; 50 chords of the half ring err by about 3e-4 on the bending flexibility.
-    std::string scene = scene_file_text("models/ring_elastic.toml");
-    auto replace = [&](const std::string& from, const std::string& to) { replace_once(scene, from, to); };
-    replace("ky = 1200.0\nhalve_at = [[0.0, 0.0]]\n", "ky = 1e6\nacts_on = \"members\"\n");
-    replace("increment = 0.5", "increment = 0.005");
-    replace("target_displacement = 100.0", "target_displacement = 0.05");
-    const Run r = run_scene(scene);
+    const Run r = run_scene(edited_scene("models/ring_elastic.toml", {{"ky = 1200.0\nhalve_at = [[0.0, 0.0]]\n", "ky = 1e6\nacts_on = \"members\"\n"},
+                                                                    {"increment = 0.5", "increment = 0.005"},
+                                                                    {"target_displacement = 100.0", "target_displacement = 0.05"}}));
     REQUIRE(r.summary.status == RunStatus::completed);
     const StepResult& first = r.steps[1];
     CHECK(first.load / first.control_displacement == Approx(1.0 / ((M_PI / 4.0 - 2.0 / M_PI) * 1e3)).epsilon(1e-3));
@@ -370,13 +373,11 @@ TEST_CASE("A perfectly plastic pipe flattened between plates acting along its me
     // models/gallery/steel_pipe_flattened.toml with the paper's law (elastic–perfectly plastic),
     // 30 layers and the plates along the members: the walls meet (self-contact) before the plate
     // has travelled 2R − h = 195.
-    std::string scene = scene_file_text("models/gallery/steel_pipe_flattened.toml");
-    auto replace = [&](const std::string& from, const std::string& to) { replace_once(scene, from, to); };
-    replace("law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n");
-    replace("h = 5.0\n", "h = 5.0\nfibres = 30\n");
-    replace("ky = \"21875 N/mm\"\nhalve_at = [[0.0, 0.0]]\n", "acts_on = \"members\"\nky = \"3482 MPa\"\n");
-    replace("ky = \"21875 N/mm\"\nhalve_at = [[0.0, 200.0]]\n", "acts_on = \"members\"\nky = \"3482 MPa\"\n");
-    const Run r = run_scene(scene);
+    const Run r = run_scene(edited_scene("models/gallery/steel_pipe_flattened.toml",
+                                         {{"law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n"},
+                                          {"h = 5.0\n", "h = 5.0\nfibres = 30\n"},
+                                          {"ky = \"21875 N/mm\"\nhalve_at = [[0.0, 0.0]]\n", "acts_on = \"members\"\nky = \"3482 MPa\"\n"},
+                                          {"ky = \"21875 N/mm\"\nhalve_at = [[0.0, 200.0]]\n", "acts_on = \"members\"\nky = \"3482 MPa\"\n"}}));
     INFO(r.summary.reason);
     REQUIRE(r.summary.status == RunStatus::completed);
     CHECK(r.steps.back().load_factor == Approx(195.0));
