@@ -213,6 +213,7 @@ TableSpec section_table_spec() {
     std::vector<std::string> shapes;
     for (const SectionShape& s : section_shapes()) shapes.push_back(s.name);
     const std::string distributed = "`distributed` only: ";
+    const std::string layers_default = "10; 30 with a perfectly plastic law and `plasticity = \"distributed\"` (its M–κ turns flat once every layer has yielded)";
     return {"section", true, "shape", {
         text("name").needed().about("referenced by members"),
         text("material").needed().about("a `[[material]]`'s name"),
@@ -224,11 +225,11 @@ TableSpec section_table_spec() {
         number("thickness", dimension::length).positive().follows("√(12 I/A)").of("properties")
             .about("`properties`: the distance between the section's surfaces, for `[[self_contact]]` (the default is the depth of "
                    "the rectangle with the same A and I). The other shapes have theirs: `h`, `depth`, `diameter`"),
-        whole("fibres", 2, 100000).fallback(10.0).of("properties").varied_in_studies()
+        whole("fibres", 2, 100000).follows(layers_default).of("properties").varied_in_studies()
             .about("`properties` with an inelastic material: layers of the equivalent rectangle"),
         number("b", dimension::length).positive().needed().of("rectangle").about("`rectangle`: width"),
         number("h", dimension::length).positive().needed().of("rectangle").about("`rectangle`: depth"),
-        whole("fibres", 1, 100000).fallback(10.0).of("rectangle").varied_in_studies().about("`rectangle`: layers through the depth"),
+        whole("fibres", 1, 100000).follows(layers_default).of("rectangle").varied_in_studies().about("`rectangle`: layers through the depth"),
         text("profile").of("i")
             .about("`i`: a rolled profile by name, its plates and root radius from the tables of EN 10365 (`\"IPE 300\"`, "
                    "`\"HEA 200\"`, `\"HEB 200\"`, `\"HEM 200\"`, in mm) and the AISC Shapes Database v15.0 (`\"W14x90\"`, in "

@@ -106,18 +106,19 @@ void SceneBuilder::read_sections(TomlTableReader& top) {
             if (found == materials_.end()) table.fail(key, "no [[material]] named '" + other + "'");
             return ShapeMaterial{found->second.E, found->second.steel};
         };
+        // Hinges by default for an inelastic material, unless its law hardens: a plastic
+        // zone follows the hardening along the member, a hinge lumps it at the end.
+        const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
+        const std::string plasticity =
+            r.choice_or("plasticity", !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
         SectionParts parts({m->second.E, m->second.steel}, lookup);
+        if (plasticity == "distributed" && m->second.steel && !hardens) parts.set_default_layers(default_perfectly_plastic_zone_layers);
         shape.build(r, parts);
         parts.read_rebars(r);
         parts.finish();
         SectionSpec s = std::move(parts.spec());
         if (r.has("plastic"))
             r.fail("plastic", "replaced by plasticity = \"none\" | \"hinges\" | \"distributed\"");
-        // Hinges by default for an inelastic material, unless its law hardens: a plastic
-        // zone follows the hardening along the member, a hinge lumps it at the end.
-        const bool hardens = m->second.steel && !find_material_law(m->second.steel->law)->perfectly_plastic;
-        const std::string plasticity =
-            r.choice_or("plasticity", !m->second.steel ? "none" : hardens ? "distributed" : "hinges");
         if (plasticity != "none" && !m->second.steel)
             r.fail("plasticity", "an inelastic section needs a material with 'fy'");
         if (plasticity == "distributed") {

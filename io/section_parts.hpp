@@ -36,6 +36,9 @@ public:
     // The section the shape builds (its own A and I about y = 0, its fibres).
     SectionSpec& spec() { return section_; }
     const ShapeMaterial& main() const { return main_; }
+    // Layers through a rectangle's depth where the scene gives no `fibres`.
+    int default_layers() const { return default_layers_; }
+    void set_default_layers(int layers) { default_layers_ = layers; }
 
     // The fibre material index of the material `key` names (1 + its place in other_materials);
     // its E through `E`. Refused for an elastic material in an inelastic section.
@@ -52,6 +55,7 @@ private:
     ShapeMaterial main_;
     MaterialLookup lookup_;
     std::vector<PartStiffness> parts_;
+    int default_layers_ = plastica::default_layers;
 };
 
 // Horizontal layers of a disc of radius R (a filled tube's core): exact areas and centroids.

@@ -31,7 +31,7 @@ void properties(TomlTableReader& t, SectionParts& parts) {
     if (m.steel) {
         // A and I alone define no fibres: an equivalent rectangle carries them.
         const double h = std::sqrt(12.0 * s.inertia / s.area);
-        s.fibres = rectangle_section(s.E, s.area / h, h, t.integer("fibres")).fibres;
+        s.fibres = rectangle_section(s.E, s.area / h, h, t.integer_or("fibres", parts.default_layers())).fibres;
     }
 }
 
@@ -39,7 +39,7 @@ void rectangle(TomlTableReader& t, SectionParts& parts) {
     const double b = t.number("b");
     const double h = t.number("h");
     SectionSpec& s = parts.spec();
-    s = rectangle_section(parts.main().E, b, h, t.integer("fibres"));
+    s = rectangle_section(parts.main().E, b, h, t.integer_or("fibres", parts.default_layers()));
     s.depth = h;
 }
 

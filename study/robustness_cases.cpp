@@ -1,5 +1,7 @@
 #include "robustness_cases.hpp"
 
+#include "crushing_cases.hpp"
+
 #include "analysis/path_following.hpp"
 #include "curve_error.hpp"
 #include "embedded_scenes.hpp"
@@ -11,11 +13,6 @@
 
 namespace plastica {
 
-namespace {
-
-using Steps = std::vector<StepResult>;
-
-// The scene text with each `from` replaced by `to` (each must occur).
 std::string edited(std::string text, const std::vector<std::pair<std::string, std::string>>& edits) {
     for (const auto& [from, to] : edits) {
         const std::size_t at = text.find(from);
@@ -24,6 +21,10 @@ std::string edited(std::string text, const std::vector<std::pair<std::string, st
     }
     return text;
 }
+
+namespace {
+
+using Steps = std::vector<StepResult>;
 
 std::string inelastic_ring(const std::vector<std::pair<std::string, std::string>>& edits) {
     return edited(embedded_scene("ring_inelastic"), edits);
@@ -376,65 +377,7 @@ std::vector<StabilityCase> robustness_cases() {
                                         ? "" : "pR³/EI = " + std::to_string(p) + " where the walls meet, elastica 5.247";
                          }});
     }
-    // Steel rings crushed between plates to 65 % of their diameter (fibre sections, hardening
-    // 1e-4·E): R/h 10, 20, 40 under load control of the plate's travel (as shipped), under
-    // displacement control of the top and under arc length; the plate force within 0.95–1.07
-    // of DeRuntz & Hodge's crush load (4M_p/R)/√(1 − (δ/D)²) from δ = 0.2 D on
-    // (tests/test_crushing.cpp measures 0.962–1.059).
-    // The same with refined plastic hinges of the hardening steel (rows hardening by b).
-    for (const bool hinges : {false, true})
-    for (const double r_over_h : {10.0, 20.0, 40.0})
-        for (const char* scheme : {"load_control", "displacement_control", "arc_length"}) {
-            const bool by_displacement = std::string(scheme) == "displacement_control";
-            // The plates act along the members: 1e4·EI/R³ spread over the element length πR/50.
-            const double h = 100.0 / r_over_h, k = 1e4 * 210000.0 * h * h * h / 12.0 / 1e6 / (M_PI * 100.0 / 50.0);
-            std::vector<std::pair<std::string, std::string>> edits{{"h = 5.0", "h = " + std::to_string(h)},
-                                                                   {"ky = \"3482 MPa\"", "ky = " + std::to_string(k)},
-                                                                   {"ky = \"3482 MPa\"", "ky = " + std::to_string(k)}};
-            if (by_displacement)
-                edits.insert(edits.end(), {{"scheme = \"load_control\"", "scheme = \"displacement_control\""},
-                                           {"target_load_factor = 130.0", "target_displacement = 130.0"}});
-            else if (std::string(scheme) == "arc_length")
-                edits.push_back({"scheme = \"load_control\"", "scheme = \"arc_length\""});
-            if (hinges) edits.push_back({"plasticity = \"distributed\"", "plasticity = \"hinges\""});
-            const double mp = 355.0 * h * h / 4.0;
-            const std::string how = by_displacement ? ", displacement control" : std::string(scheme) == "arc_length" ? ", arc length" : ", load control of the plate";
-            cases.push_back({hinges ? "steel ring crushed between plates, hardening hinges" : "steel ring crushed between plates, fibre sections",
-                             "R/h " + std::to_string(static_cast<int>(r_over_h)) + how,
-                             edited(embedded_scene("gallery/steel_ring_crushed"), edits), done,
-                             [mp](const Steps& steps, const RunSummary&) -> std::string {
-                                 const double R = 100.0, D = 2.0 * R, P0 = 4.0 * mp / R;
-                                 if (steps.back().load_factor < 0.64 * D)
-                                     return "the plates approached by " + std::to_string(steps.back().load_factor) + " only";
-                                 for (const StepResult& r : steps) {
-                                     if (r.load_factor < 0.2 * D) continue;
-                                     const double ratio = r.load / (P0 / std::sqrt(1.0 - std::pow(r.load_factor / D, 2)));
-                                     if (ratio < 0.95 || ratio > 1.07)
-                                         return "P/P_DH = " + std::to_string(ratio) + " at δ = " + std::to_string(r.load_factor);
-                                 }
-                                 return "";
-                             }});
-        }
-    // The flattening test: the steel ring pressed on until its walls meet (self-contact), under
-    // load control of the plate's travel (as shipped), displacement control of the top and arc length.
-    for (const char* scheme : {"load_control", "displacement_control", "arc_length"}) {
-        const bool by_displacement = std::string(scheme) == "displacement_control";
-        std::vector<std::pair<std::string, std::string>> edits;
-        if (by_displacement)
-            edits = {{"scheme = \"load_control\"", "scheme = \"displacement_control\""},
-                     {"target_load_factor = 195.0", "target_displacement = 195.0"}};
-        else if (std::string(scheme) == "arc_length")
-            edits = {{"scheme = \"load_control\"", "scheme = \"arc_length\""}};
-        cases.push_back({"steel pipe ring flattened until its walls meet",
-                         by_displacement ? "displacement control" : std::string(scheme) == "arc_length" ? "arc length" : "load control of the plate",
-                         edited(embedded_scene("gallery/steel_pipe_flattened"), edits), done,
-                         [](const Steps& steps, const RunSummary&) -> std::string {
-                             // The plate's travel (load control) or the top's (displacement control).
-                             const double travel = std::max(steps.back().load_factor, steps.back().control_displacement);
-                             if (travel < 195.0 - 1e-6) return "the walls came " + std::to_string(travel) + " closer only";
-                             return steps.back().surface_contacts.empty() ? "the walls met without touching" : "";
-                         }});
-    }
+    append_crushing_cases(cases);
     // Motion in time: a pipe dropped on a floor (a stiff penalty, hinges folding), as shipped,
     // four times as fast (16 times the energy), and with HHT at five times the step: each keeps
     // its energy balance, and the floor reverses most of the momentum.

@@ -6,9 +6,14 @@
 
 #include "stability_cases.hpp"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace plastica {
+
+// The scene text with each `from` replaced by `to` (each must occur, else std::logic_error).
+std::string edited(std::string text, const std::vector<std::pair<std::string, std::string>>& edits);
 
 std::vector<StabilityCase> robustness_cases();
 

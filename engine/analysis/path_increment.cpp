@@ -79,6 +79,16 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         result.rule = Acceptance::none;
         result.failure = NewtonFailure::turned_back;
     }
+    // Where λ moves plates or prescribed displacements alone it is the travel the user drives:
+    // an arc-length step that takes it back met the arc where the structure springs back (its
+    // fibres unloading), not further along the path. Refused likewise; attempt_step then takes
+    // the step under load control of the travel. A flattened pipe's plate otherwise returned
+    // from 170 of its 195 and the ring unloaded to nothing.
+    if (!branch && result.converged() && constraint.scheme() == Scheme::arc_length && !model_.has_forces(factors_.driven) &&
+        path_.traced_a_step() && !stages_.turned_back() && result.load_change * stages_.direction() < 0.0) {
+        result.rule = Acceptance::none;
+        result.failure = NewtonFailure::turned_back;
+    }
     if (result.converged()) previous_increment_ = result.increment;
     return result;
 }

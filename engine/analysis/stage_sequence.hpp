@@ -27,6 +27,8 @@ public:
     double begin_next(double load_factor, const Eigen::VectorXd& u);
     // Whether the current stage travels the other way than the one before it.
     bool turned_back() const { return turned_back_; }
+    // The sign of travel in λ or in the controlled displacement toward the current target.
+    double direction() const { return direction_; }
 
     // The current stage's controlled displacement at u, signed as reported.
     double control_value(const Eigen::VectorXd& u) const;

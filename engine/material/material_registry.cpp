@@ -21,8 +21,9 @@ const std::vector<MaterialLaw>& material_laws() {
         {"kinematic_hardening",
          {{"hardening_ratio", 0.0, 1.0,
            "b = E_sh/E; fibre sections crushed far into the plastic range (a ring between plates) need some "
-           "hardening or layers: with b = 1e-4 they reach 65 % of the diameter; perfectly plastic fibres need "
-           "`fibres = 30` and plates acting along the members (`acts_on`, docs/method.md)"}}, "bilinear with linear kinematic hardening (tangent b·E past yield, Bauschinger effect)",
+           "hardening or layers: with b = 1e-4 they reach 65 % of the diameter; perfectly plastic fibres in a "
+           "plastic zone get 30 layers by default and do too with plates acting along the members (`acts_on`, "
+           "docs/method.md)"}}, "bilinear with linear kinematic hardening (tangent b·E past yield, Bauschinger effect)",
          make<KinematicHardeningSteel>, false},
         {"concrete",
          {{"fc", 0.0, HUGE_VAL, "compressive strength (a positive number); the material's strength in place of fy", HUGE_VAL, true},
