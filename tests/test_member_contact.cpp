@@ -382,3 +382,17 @@ TEST_CASE("Arc length keeps the plate's direction through a flattening on plates
     CHECK(returned == 0);
     CHECK_FALSE(r.steps.back().surface_contacts.empty());
 }
+
+TEST_CASE("A flattening under displacement control that stops with its walls pressed together says so", "[contact][member][crushing][self_contact]") {
+    // The perfectly plastic flattening with the top's travel controlled: the walls meet at a
+    // top travel of 193.4 and the top then barely moves (194.92 of 195). The stop names that
+    // cause and what to do, beside the numbers.
+    const Run r = run_scene(edited_scene("models/gallery/steel_pipe_flattened.toml",
+                                         {{"law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n"},
+                                          {"scheme = \"load_control\"", "scheme = \"displacement_control\""},
+                                          {"target_load_factor = 195.0", "target_displacement = 195.0"}}));
+    REQUIRE(r.summary.status == RunStatus::no_convergence);
+    CHECK_FALSE(r.steps.back().surface_contacts.empty());
+    CHECK(r.steps.back().control_displacement > 194.0);
+    CHECK_THAT(r.summary.reason, Catch::Contains("the members' surfaces press on each other") && Catch::Contains("control the plate's travel"));
+}

@@ -92,6 +92,7 @@ std::optional<StopReason> PathFollowing::after_failure(const NewtonResult& outco
     failed.settled = outcome.settled;
     failed.tolerance_follows_floor = a.residual_tolerance_follows_floor;
     failed.floor = floor_at_failure;
+    failed.controlled_through_contact = a.scheme == Scheme::displacement_control && !system_.self_contact().contacts().empty();
     return diagnose_failed_step(failed);
 }
 

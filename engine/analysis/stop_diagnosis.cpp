@@ -44,6 +44,9 @@ StopReason diagnose_failed_step(const FailedStep& f) {
             else
                 why << "use fewer or longer elements, or a residual_tolerance above that";
         }
+        if (f.controlled_through_contact)
+            why << "; the members' surfaces press on each other ([[self_contact]]), so the controlled point can "
+                   "hardly move further: control the plate's travel (load control or arc length) to press on";
     }
     out.reason = why.str();
     return out;

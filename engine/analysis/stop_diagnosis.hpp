@@ -30,6 +30,9 @@ struct FailedStep {
     bool settled = true;          // the active sets agreed with the state where Newton ended
     bool tolerance_follows_floor = false;
     RoundOffFloor floor;          // at the failed state
+    // Displacement control with the members' surfaces pressed together at the last converged
+    // state: the controlled point may be unable to move on (a flattened ring's walls met).
+    bool controlled_through_contact = false;
 };
 
 struct StopReason {
