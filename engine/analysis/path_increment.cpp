@@ -74,18 +74,16 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
         corrector = constraint.corrector(h, context);
     }
     NewtonResult result = solve_increment(problem, *corrector, settings, solver_, hook, start);
-    // Refused, the increment counts as a failure and the step is cut.
-    if (!branch && result.converged() && path_.traced_a_step() && constraint.turned_back(result.increment, previous_increment_)) {
-        result.rule = Acceptance::none;
-        result.failure = NewtonFailure::turned_back;
-    }
-    // Where λ moves plates or prescribed displacements alone it is the travel the user drives:
-    // an arc-length step that takes it back met the arc where the structure springs back (its
-    // fibres unloading), not further along the path. Refused likewise; attempt_step then takes
-    // the step under load control of the travel. A flattened pipe's plate otherwise returned
-    // from 170 of its 195 and the ring unloaded to nothing.
-    if (!branch && result.converged() && constraint.scheme() == Scheme::arc_length && !model_.has_forces(factors_.driven) &&
-        path_.traced_a_step() && !stages_.turned_back() && result.load_change * stages_.direction() < 0.0) {
+    // Refused, the increment counts as a failure and the step is cut. Where λ moves plates or
+    // prescribed displacements alone it is the travel the user drives: an arc-length step that
+    // takes it back met the arc where the structure springs back (its fibres unloading), not
+    // further along the path; attempt_step then takes the step under load control of the
+    // travel. A flattened pipe's plate otherwise returned from 170 of its 195 and the ring
+    // unloaded to nothing.
+    const bool travel_back = constraint.scheme() == Scheme::arc_length && !model_.has_forces(factors_.driven) &&
+                             !stages_.turned_back() && result.load_change * stages_.direction() < 0.0;
+    if (!branch && result.converged() && path_.traced_a_step() &&
+        (travel_back || constraint.turned_back(result.increment, previous_increment_))) {
         result.rule = Acceptance::none;
         result.failure = NewtonFailure::turned_back;
     }
