@@ -57,6 +57,7 @@ std::string to_json(const RunReport& r) {
     j["iterations"] = r.summary.iterations;
     j["cut_steps"] = r.summary.cut_steps;
     j["refined_steps"] = r.summary.refined_steps;
+    if (r.summary.stiffened_steps > 0) j["stiffened_steps"] = r.summary.stiffened_steps;
     if (r.model) {
         // The tolerance used and why: the scene's, or the default raised to the round-off floor.
         const AnalysisSpec& a = r.model->analysis;

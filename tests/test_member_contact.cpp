@@ -285,22 +285,35 @@ TEST_CASE("A ring crushed between plates acting along its members follows DeRunt
     // ring approaches it from below as its plastic zones spread: within 5 % from δ = 0.2 D.
     // The gallery's ring as it stands (1e-4 hardening), then the issue's matrix as a user tries
     // it: the same scene with the paper's law (elastic–perfectly plastic), walls of R/h 10, 20
-    // and 40, under the three schemes, all else the scene's defaults (perfectly plastic fibre
-    // sections take 30 layers by themselves: engine/model/model.hpp).
-    struct Case { double r_over_h; std::string scheme; bool perfectly_plastic; };
-    const Case c = GENERATE(Case{20.0, "load_control", false}, Case{10.0, "load_control", true}, Case{10.0, "displacement_control", true},
-                            Case{10.0, "arc_length", true}, Case{20.0, "load_control", true}, Case{20.0, "displacement_control", true},
-                            Case{20.0, "arc_length", true}, Case{40.0, "load_control", true}, Case{40.0, "displacement_control", true},
-                            Case{40.0, "arc_length", true});
-    INFO("R/h = " << c.r_over_h << ", " << c.scheme << (c.perfectly_plastic ? ", perfectly plastic" : ", hardening"));
+    // and 40, under the three schemes, with fibre sections and with hinges, all else the scene's
+    // defaults (perfectly plastic fibre sections take 30 layers by themselves:
+    // engine/model/model.hpp; hinges take the steps their mechanism stops with stiffened
+    // capacity rows: analysis/path_limits.cpp).
+    struct Case { double r_over_h; std::string scheme; bool perfectly_plastic; bool hinges; };
+    const Case c = GENERATE(Case{20.0, "load_control", false, false}, Case{10.0, "load_control", true, false},
+                            Case{10.0, "displacement_control", true, false}, Case{10.0, "arc_length", true, false},
+                            Case{20.0, "load_control", true, false}, Case{20.0, "displacement_control", true, false},
+                            Case{20.0, "arc_length", true, false}, Case{40.0, "load_control", true, false},
+                            Case{40.0, "displacement_control", true, false}, Case{40.0, "arc_length", true, false},
+                            Case{10.0, "load_control", true, true}, Case{10.0, "displacement_control", true, true},
+                            Case{10.0, "arc_length", true, true}, Case{20.0, "load_control", true, true},
+                            Case{20.0, "displacement_control", true, true}, Case{20.0, "arc_length", true, true},
+                            Case{40.0, "load_control", true, true}, Case{40.0, "displacement_control", true, true},
+                            Case{40.0, "arc_length", true, true});
+    INFO("R/h = " << c.r_over_h << ", " << c.scheme << (c.perfectly_plastic ? ", perfectly plastic" : ", hardening")
+                   << (c.hinges ? ", hinges" : ", fibres"));
     const double h = 100.0 / c.r_over_h;
     std::vector<std::pair<std::string, std::string>> edits = {{"h = 5.0\n", "h = " + num(h) + "\n"},
                                                               {"scheme = \"load_control\"", "scheme = \"" + c.scheme + "\""}};
     if (c.perfectly_plastic) edits.push_back({"law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n"});
+    if (c.hinges) edits.push_back({"plasticity = \"distributed\"", "plasticity = \"hinges\""});
     if (c.scheme == "displacement_control") edits.push_back({"target_load_factor = 130.0", "target_displacement = 130.0"});
     const Run r = run_scene(edited_scene("models/gallery/steel_ring_crushed.toml", edits));
     INFO(r.summary.reason);
     REQUIRE(r.summary.status == RunStatus::completed);
+    // Steps taken with stiffened hinges stay a few: the law stays the paper's.
+    INFO("stiffened steps " << r.summary.stiffened_steps << " of " << r.summary.steps);
+    CHECK(r.summary.stiffened_steps <= r.summary.steps / 50);
     const double Mp = 355.0 * h * h / 4.0;
     for (double ratio : {0.2, 0.4, 0.6}) {
         const double P = load_at(r, ratio * 200.0), rigid_plastic = 4.0 * Mp / 100.0 / std::sqrt(1.0 - ratio * ratio);
@@ -308,10 +321,12 @@ TEST_CASE("A ring crushed between plates acting along its members follows DeRunt
         CHECK(std::abs(P / rigid_plastic - 1.0) < 0.05);
     }
     // Past the knee of first yield (δ = 0.1 D) the curve has no steps: with the plates acting at
-    // the nodes it deviates by 2 % where each node lands.
+    // the nodes it deviates by 2 % where each node lands. Hinges keep a ripple of their own
+    // (0.31-0.49 % measured): the plastic zone moves from node to node, each hinge forming at
+    // M_p at once, where fibres spread it over the elements.
     const double rough = roughness(r, 20.0);
     INFO("roughness " << rough);
-    CHECK(rough < 3e-3);
+    CHECK(rough < (c.hinges ? 5e-3 : 3e-3));
 }
 
 namespace {
@@ -356,13 +371,22 @@ TEST_CASE("A line pipe flattened on 40 to 200 elements completes under every sch
 
 TEST_CASE("A perfectly plastic pipe flattened between plates acting along its members reaches meeting walls", "[contact][member][crushing][self_contact]") {
     // models/gallery/steel_pipe_flattened.toml (plates along the members) with the paper's law
-    // (elastic–perfectly plastic) and so its default 30 layers: the walls meet (self-contact)
-    // before the plate has travelled 2R − h = 195.
-    const Run r = run_scene(edited_scene("models/gallery/steel_pipe_flattened.toml",
-                                         {{"law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n"}}));
+    // (elastic–perfectly plastic) and so its default 30 layers, or in refined hinges under every
+    // scheme: the walls meet (self-contact) before the plate has travelled 2R − h = 195.
+    const std::string variant = GENERATE(as<std::string>(), "fibres", "hinges, load_control", "hinges, displacement_control", "hinges, arc_length");
+    INFO(variant);
+    std::vector<std::pair<std::string, std::string>> edits = {{"law = \"kinematic_hardening\"\nhardening_ratio = 1e-4\n", "law = \"bilinear\"\n"}};
+    if (variant != "fibres") {
+        const std::string scheme = variant.substr(8);
+        edits.push_back({"plasticity = \"distributed\"", "plasticity = \"hinges\""});
+        edits.push_back({"scheme = \"load_control\"", "scheme = \"" + scheme + "\""});
+        if (scheme == "displacement_control") edits.push_back({"target_load_factor = 195.0", "target_displacement = 195.0"});
+    }
+    const Run r = run_scene(edited_scene("models/gallery/steel_pipe_flattened.toml", edits));
     INFO(r.summary.reason);
     REQUIRE(r.summary.status == RunStatus::completed);
-    CHECK(r.steps.back().load_factor == Approx(195.0));
+    if (variant != "hinges, displacement_control") CHECK(r.steps.back().load_factor == Approx(195.0));
+    else CHECK(std::abs(r.steps.back().control_displacement) == Approx(195.0));
     CHECK_FALSE(r.steps.back().surface_contacts.empty());
     // DeRuntz & Hodge at δ/D = 0.25 and 0.5 (M_p = 355·25/4): 0.98 and 1.0 measured.
     const double P0 = 4.0 * 355.0 * 25.0 / 4.0 / 100.0;

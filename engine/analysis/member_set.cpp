@@ -213,6 +213,10 @@ double MemberSet::trial_yield_advance() const {
     return advance;
 }
 
+void MemberSet::stiffen_capacity(double ratio) {
+    for (CorotationalBeam& e : elements_) e.stiffen_capacity(ratio);
+}
+
 void MemberSet::predict_unloading() {
     for (CorotationalBeam& e : elements_) e.predict_unloading();
 }

@@ -47,6 +47,7 @@ public:
     bool all_elastic() const;
     double trial_yield_advance() const;
     void predict_unloading();
+    void stiffen_capacity(double ratio);
 
 private:
     std::array<int, 6> dofs(std::size_t e) const; // the element's DOFs in the full vector

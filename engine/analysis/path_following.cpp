@@ -272,6 +272,11 @@ void PathFollowing::commit_step(const NewtonResult& outcome, RunSummary& summary
         summary.largest_tolerance_step = step_ + 1;
     }
     system_.commit();
+    if (stiffened_step_) {
+        ++summary.stiffened_steps;
+        stiffened_step_ = false;
+        system_.stiffen_capacity(0.0);
+    }
     committed_contact_ = touching_bases(system_);
     failures_in_step_ = 0;
     steps_missing_arc_ = missed_arc_in_step_ ? steps_missing_arc_ + 1 : 0;

@@ -123,6 +123,7 @@ public:
     void commit();
     // The next increment turns the load back: its predictor unloads elastically.
     void predict_unloading() { members_->predict_unloading(); }
+    void stiffen_capacity(double ratio) { members_->stiffen_capacity(ratio); }
     void revert();
 
     // Fills the element, spring and reaction parts of a step result (committed state), the

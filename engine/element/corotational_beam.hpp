@@ -55,6 +55,7 @@ public:
     void revert();
     void freeze_states(bool frozen) { law_->freeze_states(frozen); }
     void predict_unloading() { law_->predict_unloading(); }
+    void stiffen_capacity(double ratio) { law_->stiffen_capacity(ratio); }
     double trial_yield_advance() const { return law_->trial_yield_advance(); }
     void serve_hinge_ends(const HingeEnds& ends) { law_->serve_hinge_ends(ends); }
 

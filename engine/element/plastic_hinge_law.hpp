@@ -51,6 +51,10 @@ public:
     Eigen::Vector3d plastic_deformation() const override;
     void freeze_states(bool frozen) override { frozen_ = frozen; }
     void predict_unloading() override { unloading_predictor_ = true; }
+    void stiffen_capacity(double ratio) override {
+        stiffened_ = ratio;
+        linearise_capacity(q_c_[0]); // the predictor's rows too
+    }
     bool states_consistent() const override { return consistent_; }
     double trial_yield_advance() const override;
     std::unique_ptr<BasicLaw> clone() const override {
@@ -114,6 +118,7 @@ private:
     // ratio b where its law hardens (the moment rises past M_p(N) as the hinge turns), else
     // the regularising one.
     double row_hardening_ = regularising_hardening;
+    double stiffened_ = 0.0; // a floor on row_hardening_ for the step (stiffen_capacity)
     bool consistent_ = true;
 };
 

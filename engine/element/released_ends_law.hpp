@@ -30,6 +30,7 @@ public:
     Eigen::Vector3d plastic_deformation() const override { return inner_->plastic_deformation(); }
     void freeze_states(bool frozen) override { inner_->freeze_states(frozen); }
     void predict_unloading() override { inner_->predict_unloading(); }
+    void stiffen_capacity(double ratio) override { inner_->stiffen_capacity(ratio); }
     bool states_consistent() const override { return inner_->states_consistent(); }
     double trial_yield_advance() const override { return inner_->trial_yield_advance(); }
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<ReleasedEndsLaw>(*this); }
