@@ -134,7 +134,8 @@ void SceneBuilder::read_self_contact(TomlTableReader& top) {
         }
         for (std::size_t e = 0; e < taken.size(); ++e)
             if (taken[e]) spec.elements.push_back(static_cast<int>(e));
-        if (r.has("stiffness")) spec.stiffness = r.number("stiffness");
+        spec.along_members = r.choice("acts_on") == "members";
+        if (r.has("stiffness")) spec.stiffness = r.number("stiffness", spec.along_members ? dimension::stress : dimension::force_per_length);
         model_.self_contact.push_back(std::move(spec));
         r.finish();
     }

@@ -448,8 +448,14 @@ TableSpec self_contact_table_spec() {
     return {"self_contact", true, "", {
         other("on", "`\"all\"`, a `[[line]]`/`[[arc]]` name, or a list of names").follows("`\"all\"`")
             .about("the members whose surfaces touch each other and themselves; `[[element]]`s are taken by `\"all\"`"),
+        one_of("acts_on", {"nodes", "members"}).fallback(std::string("nodes"))
+            .about("`nodes`: each node presses on the other surface's element chords, so a contact zone grows node by node; "
+                   "`members`: points along each element (4 Gauss–Lobatto points, its ends among them) press, so it grows a third of an element at a time, and "
+                   "`stiffness` is then a penalty per unit length (a stress), the surfaces pressing with stiffness·penetration "
+                   "per unit length (engine/contact/self_contact.hpp)"),
         number("stiffness", dimension::force_per_length).positive().follows("from the members")
-            .about("the penalty per pair; by default, over the members' elements, the largest of the smaller of E·A/ℓ and "
+            .dimension_follows("a force per length; with `acts_on = \"members\"` a stress")
+            .about("the penalty per pair; along the members per unit length: the default below over the element length; by default, over the members' elements, the largest of the smaller of E·A/ℓ and "
                    "100·12·E·I/ℓ³: a pressed node sinks into the surface no more than an element end shortens under the same "
                    "force, nor more than a hundredth of what an element bends under it, and the tangent stays as well "
                    "conditioned as the members make it (measured: 0.004 mm in the 5 mm walls of "

@@ -1,8 +1,14 @@
 // A steel ring (R = 100, wall h = R/(R/h), b = 1, 50 elements, fibre sections) crushed between a
-// fixed lower plate and an upper one moving down by the load factor, for the crushing tests.
+// fixed lower plate and an upper one moving down by the load factor, for the crushing tests, and
+// the roughness of a crush curve.
 #pragma once
 
+#include "analysis_helpers.hpp"
+
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace plastica::testing {
 
@@ -23,6 +29,30 @@ inline std::string crushed_ring(double r_over_h, const std::string& analysis,
            "\nhalve_at = [[0.0, 200.0]]\nbase_point = [0.0, 200.0]\nbase_normal = [0.0, -1.0]\nbase_motion = [0.0, -1.0]\n"
            "[analysis]\n" + analysis + "control_at = [0.0, 200.0]\ncontrol_dof = \"uy\"\ncontrol_sign = -1.0\nmax_steps = 4000\n"
            "[report]\nload_scale = 2.0\n";
+}
+
+// The largest deviation of the load from the mean of its 9 neighbours on a grid of the plate's
+// travel 0.5 apart (the curve interpolated linearly between steps), relative to the load, from
+// a travel of `from` on.
+inline double crush_roughness(const Run& r, double from) {
+    std::vector<double> travel, load;
+    for (const StepResult& s : r.steps) {
+        travel.push_back(s.load_factor);
+        load.push_back(s.load);
+    }
+    std::vector<double> grid;
+    for (double x = from; x <= travel.back(); x += 0.5) {
+        const std::size_t i = static_cast<std::size_t>(std::lower_bound(travel.begin(), travel.end(), x) - travel.begin());
+        const double t = (x - travel[i - 1]) / (travel[i] - travel[i - 1]);
+        grid.push_back(load[i - 1] + t * (load[i] - load[i - 1]));
+    }
+    double worst = 0.0;
+    for (std::size_t i = 4; i + 4 < grid.size(); ++i) {
+        double mean = 0.0;
+        for (std::size_t k = i - 4; k <= i + 4; ++k) mean += grid[k] / 9.0;
+        worst = std::max(worst, std::abs(grid[i] - mean) / grid[i]);
+    }
+    return worst;
 }
 
 } // namespace plastica::testing

@@ -5,6 +5,7 @@
 // rigid plates", J. Appl. Mech. 30, 1963) with curves free of the steps a node landing on a
 // plate makes.
 #include "analysis_helpers.hpp"
+#include "crushed_ring.hpp"
 #include "contact/member_overlap.hpp"
 
 #include <catch2/catch.hpp>
@@ -245,30 +246,6 @@ TEST_CASE("The elastic ring on a contact line matches linear ring theory", "[con
 
 namespace {
 
-// The largest deviation of the load from the mean of its 9 neighbours on a grid of the plate's
-// travel 0.5 apart (the curve interpolated linearly between steps), relative to the load, from
-// a travel of `from` on.
-double roughness(const Run& r, double from) {
-    std::vector<double> travel, load;
-    for (const StepResult& s : r.steps) {
-        travel.push_back(s.load_factor);
-        load.push_back(s.load);
-    }
-    std::vector<double> grid;
-    for (double x = from; x <= travel.back(); x += 0.5) {
-        const std::size_t i = static_cast<std::size_t>(std::lower_bound(travel.begin(), travel.end(), x) - travel.begin());
-        const double t = (x - travel[i - 1]) / (travel[i] - travel[i - 1]);
-        grid.push_back(load[i - 1] + t * (load[i] - load[i - 1]));
-    }
-    double worst = 0.0;
-    for (std::size_t i = 4; i + 4 < grid.size(); ++i) {
-        double mean = 0.0;
-        for (std::size_t k = i - 4; k <= i + 4; ++k) mean += grid[k] / 9.0;
-        worst = std::max(worst, std::abs(grid[i] - mean) / grid[i]);
-    }
-    return worst;
-}
-
 // The load at a plate travel, interpolated between the steps.
 double load_at(const Run& r, double travel) {
     for (std::size_t k = 1; k < r.steps.size(); ++k) {
@@ -324,7 +301,7 @@ TEST_CASE("A ring crushed between plates acting along its members follows DeRunt
     // the nodes it deviates by 2 % where each node lands. Hinges keep a ripple of their own
     // (0.31-0.49 % measured): the plastic zone moves from node to node, each hinge forming at
     // M_p at once, where fibres spread it over the elements.
-    const double rough = roughness(r, 20.0);
+    const double rough = crush_roughness(r, 20.0);
     INFO("roughness " << rough);
     CHECK(rough < (c.hinges ? 5e-3 : 3e-3));
 }
@@ -360,7 +337,7 @@ TEST_CASE("A line pipe flattened on 40 to 200 elements completes under every sch
             REQUIRE(r.summary.status == RunStatus::completed);
             at_half.push_back(load_at(r, 0.5 * D));
             // No steps where the contact spreads over the plates' nodes.
-            CHECK(roughness(r, 0.1 * D) < 3e-3);
+            CHECK(crush_roughness(r, 0.1 * D) < 3e-3);
         }
         // The load at δ/D = 0.5 converges with the mesh (measured: 279.7, 279.1, 278.8, 278.8 N/mm).
         const auto [low, high] = std::minmax_element(at_half.begin(), at_half.end());

@@ -91,7 +91,8 @@ std::string lost_contact_mechanism(const Model& model, const StructuralSystem& s
     std::vector<SurfaceHold> pressed;
     for (const SurfaceContact& c : system.self_contact().contacts()) {
         if (c.gap > 0.0) continue;
-        pressed.push_back({c.node, {c.normal[0], c.normal[1]}});
+        pressed.push_back({c.point[0], {c.normal[0], c.normal[1]}});
+        if (c.along_member()) pressed.push_back({c.point[1], {c.normal[0], c.normal[1]}});
         for (int end : c.segment) pressed.push_back({end, {-c.normal[0], -c.normal[1]}});
     }
     const std::string motion = unrestrained_rigid_motion(model, &in_contact, &pressed);

@@ -35,6 +35,9 @@ struct SurfaceContactResult {
     double xi = 0.0;                  // where along the segment
     double gap = 0.0;                 // negative: the penetration
     std::array<double, 2> force{0.0, 0.0}; // on the node; its segment takes the opposite
+    // The point that touches: (1 − eta)·point[0] + eta·point[1] (a node: both the node).
+    std::array<int, 2> point{0, 0};
+    double eta = 0.0;
 };
 
 // A transient step's energy accounts since the first transient stage began (Hughes, The

@@ -39,7 +39,7 @@ private:
     const std::vector<int>& equation_;
     double undecided_force_ = 0.0;
     std::vector<std::vector<int>> blocks_;              // one per pair that has touched
-    std::map<std::array<int, 3>, std::size_t> block_of_; // a pair's nodes → its block
+    std::map<std::vector<int>, std::size_t> block_of_; // a pair's distinct nodes → its block
     bool blocks_changed_ = false;
 };
 

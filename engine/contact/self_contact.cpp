@@ -15,6 +15,13 @@ namespace {
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
+// Gauss–Lobatto points on [0, 1] and their weights: exact for the penalty of a gap linear along
+// the element (a quadratic); the ends among them, so that a node standing on a surface holds
+// from the first touch (inner points alone leave a ring on one node floating).
+constexpr int points_per_element = 4;
+constexpr double gauss_eta[points_per_element] = {0.0, 0.2763932022500210, 0.7236067977499790, 1.0};
+constexpr double gauss_weight[points_per_element] = {1.0 / 12.0, 5.0 / 12.0, 5.0 / 12.0, 1.0 / 12.0};
+
 double perp_dot(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a[0] * b[1] - a[1] * b[0]; }
 
 // The nodes within `radius` of `from` along the elements (undeformed lengths), sorted.
@@ -46,7 +53,7 @@ using Key = std::tuple<int, int, int>;
 // A pair whose force at its gap is within the band keeps its state; without a band (the first
 // evaluation) the geometry alone decides, so surfaces that start touching touch.
 bool undecided(const SurfaceContact& c, double band) { return band > 0.0 && c.stiffness * std::abs(c.gap) <= band; }
-Key key_of(const SurfaceContact& c) { return {c.node, c.segment[0], c.segment[1]}; }
+Key key_of(const SurfaceContact& c) { return {c.point_id, c.segment[0], c.segment[1]}; }
 
 } // namespace
 
@@ -63,12 +70,14 @@ double SelfContact::default_stiffness(const Model& model, const std::vector<int>
 }
 
 SelfContact::SelfContact(const Model& model) {
+    int points_so_far = 0;
     for (const Node& n : model.nodes) {
         x0_.push_back(n.x);
         x0_.push_back(n.y);
     }
     for (const SelfContactSpec& spec : model.self_contact) {
         Group g;
+        g.along_members = spec.along_members;
         g.stiffness = spec.stiffness > 0.0 ? spec.stiffness : default_stiffness(model, spec.elements);
         std::map<int, double> half_depth; // per node, the deepest section meeting there
         std::vector<std::vector<std::pair<int, double>>> links(model.nodes.size());
@@ -76,11 +85,11 @@ SelfContact::SelfContact(const Model& model) {
         for (int e : spec.elements) {
             const ElementSpec& el = model.elements[static_cast<std::size_t>(e)];
             const double h = 0.5 * model.sections[static_cast<std::size_t>(el.section)].surface_depth();
-            g.segments.push_back({el.node_i, el.node_j, h});
-            deepest = std::max(deepest, 2.0 * h);
-            for (int node : {el.node_i, el.node_j}) half_depth[node] = std::max(half_depth[node], h);
             const Node &a = model.nodes[static_cast<std::size_t>(el.node_i)], &b = model.nodes[static_cast<std::size_t>(el.node_j)];
             const double length = std::hypot(b.x - a.x, b.y - a.y);
+            g.segments.push_back({el.node_i, el.node_j, h, length});
+            deepest = std::max(deepest, 2.0 * h);
+            for (int node : {el.node_i, el.node_j}) half_depth[node] = std::max(half_depth[node], h);
             links[static_cast<std::size_t>(el.node_i)].push_back({el.node_j, length});
             links[static_cast<std::size_t>(el.node_j)].push_back({el.node_i, length});
         }
@@ -93,6 +102,20 @@ SelfContact::SelfContact(const Model& model) {
             g.node_half_depth.push_back(h);
             g.near.push_back(nodes_within(node, radius, links));
         }
+        for (const Segment& s : g.segments) {
+            const auto entry = [&](int node) {
+                return static_cast<std::size_t>(std::lower_bound(g.nodes.begin(), g.nodes.end(), node) - g.nodes.begin());
+            };
+            g.segment_ends.push_back({entry(s.a), entry(s.b)});
+        }
+        if (g.along_members && spec.stiffness <= 0.0) {
+            // The default per pair, spread over the mean element length.
+            double total = 0.0;
+            for (const Segment& s : g.segments) total += s.length;
+            g.stiffness *= static_cast<double>(g.segments.size()) / total;
+        }
+        g.first_point_id = static_cast<int>(model.nodes.size()) + points_so_far;
+        points_so_far += static_cast<int>(g.segments.size()) * points_per_element;
         groups_.push_back(std::move(g));
     }
 }
@@ -114,6 +137,9 @@ bool SelfContact::touch(const Group& group, std::size_t p, const Segment& s, Sur
     // Centre lines that meet have no normal: the crossing check stops such a run.
     if (distance - reach > 0.0 || distance <= 1e-9 * reach) return false;
     out.node = node;
+    out.point = {node, node};
+    out.eta = 0.0;
+    out.point_id = node;
     out.segment = xi <= 0.0 ? std::array<int, 2>{s.a, s.a} : xi >= 1.0 ? std::array<int, 2>{s.b, s.b} : std::array<int, 2>{s.a, s.b};
     out.xi = xi;
     out.reach = reach;
@@ -123,12 +149,46 @@ bool SelfContact::touch(const Group& group, std::size_t p, const Segment& s, Sur
     return true;
 }
 
+bool SelfContact::touch_along(const Group& group, std::size_t own, int g, const Segment& s, SurfaceContact& out) const {
+    const Segment& mine = group.segments[own];
+    const double eta = gauss_eta[g];
+    const Eigen::Vector2d x = (1.0 - eta) * position(mine.a) + eta * position(mine.b), a = position(s.a), b = position(s.b);
+    const double reach = mine.half_depth + s.half_depth;
+    // The cheap rejection first (the box), then the neighbours along the members.
+    if (x[0] < std::min(a[0], b[0]) - reach || x[0] > std::max(a[0], b[0]) + reach ||
+        x[1] < std::min(a[1], b[1]) - reach || x[1] > std::max(a[1], b[1]) + reach)
+        return false;
+    for (std::size_t end : group.segment_ends[own]) {
+        const std::vector<int>& near = group.near[end];
+        if (std::binary_search(near.begin(), near.end(), s.a) || std::binary_search(near.begin(), near.end(), s.b)) return false;
+    }
+    const Eigen::Vector2d e = b - a;
+    const double xi = std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    const Eigen::Vector2d toward = x - (a + xi * e);
+    const double distance = toward.norm();
+    if (distance - reach > 0.0 || distance <= 1e-9 * reach) return false;
+    out.node = eta < 0.5 ? mine.a : mine.b;
+    out.point = {mine.a, mine.b};
+    out.eta = eta;
+    out.point_id = group.first_point_id + static_cast<int>(own) * points_per_element + g;
+    out.segment = xi <= 0.0 ? std::array<int, 2>{s.a, s.a} : xi >= 1.0 ? std::array<int, 2>{s.b, s.b} : std::array<int, 2>{s.a, s.b};
+    out.xi = xi;
+    out.reach = reach;
+    out.gap = distance - reach;
+    // Half the point's share of the element: the other surface's points make up the rest.
+    out.stiffness = 0.5 * group.stiffness * gauss_weight[g] * mine.length;
+    out.normal = toward / distance;
+    return true;
+}
+
 void SelfContact::evaluate_pair(SurfaceContact& c) const {
-    // Π = ½·k·g², g = d − reach: force k·g·∇d, tangent k·∇d∇dᵀ + k·g·∇²d.
-    const Eigen::Vector2d x = position(c.node);
+    // Π = ½·k·g², g = d − reach: force k·g·∇d, tangent k·∇d∇dᵀ + k·g·∇²d, over the point x and
+    // the segment's ends; a point along a member then shares its part between its element's
+    // ends as (1 − eta, eta).
+    const Eigen::Vector2d x = point_position(c);
     Vector6 grad = Vector6::Zero();
     Matrix6 hess = Matrix6::Zero();
-    if (c.nodes() == 2) {
+    if (c.segment[0] == c.segment[1]) { // a segment end
         const Eigen::Vector2d d = x - position(c.segment[0]);
         const double distance = d.norm();
         c.gap = distance - c.reach;
@@ -168,38 +228,69 @@ void SelfContact::evaluate_pair(SurfaceContact& c) const {
                         area * hess_length / (L * L) + 2.0 * area * grad_length * grad_length.transpose() / (L * L * L));
         c.normal = sigma * Eigen::Vector2d(-t[1], t[0]);
     }
-    c.force = c.stiffness * c.gap * grad;
-    c.tangent = c.stiffness * (grad * grad.transpose() + c.gap * hess);
+    // Slots: point[0], segment[0], segment[1], point[1]; x = (1 − eta)·point[0] + eta·point[1].
+    Eigen::Matrix<double, 6, 8> spread = Eigen::Matrix<double, 6, 8>::Zero();
+    spread.block<2, 2>(0, 0) = (1.0 - c.eta) * Eigen::Matrix2d::Identity();
+    spread.block<2, 2>(0, 6) = c.eta * Eigen::Matrix2d::Identity();
+    spread.block<4, 4>(2, 2).setIdentity();
+    c.force = c.stiffness * c.gap * spread.transpose() * grad;
+    c.tangent = c.stiffness * spread.transpose() * (grad * grad.transpose() + c.gap * hess) * spread;
+}
+
+void SelfContact::serve_ends_once(std::vector<SurfaceContact>& found, std::size_t first) {
+    // One contact per segment end, and none at an end where the point touches the interior of
+    // a segment that ends there (that one is nearer or as near).
+    auto end_is_served = [&](std::size_t k) {
+        const SurfaceContact& ck = found[k];
+        if (ck.segment[0] != ck.segment[1]) return false;
+        for (std::size_t m = first; m < found.size(); ++m) {
+            if (m == k) continue;
+            const SurfaceContact& cm = found[m];
+            if (cm.segment[0] != cm.segment[1] && (cm.segment[0] == ck.segment[0] || cm.segment[1] == ck.segment[0])) return true;
+            if (cm.segment[0] == cm.segment[1] && cm.segment[0] == ck.segment[0] && m < k) return true;
+        }
+        return false;
+    };
+    std::vector<SurfaceContact> kept;
+    for (std::size_t k = first; k < found.size(); ++k)
+        if (!end_is_served(k)) kept.push_back(found[k]);
+    found.resize(first);
+    found.insert(found.end(), kept.begin(), kept.end());
 }
 
 void SelfContact::evaluate(const Eigen::VectorXd& u, bool freeze_active, double undecided_force) {
     u_ = u.data();
     std::vector<SurfaceContact> found;
     SurfaceContact c;
-    for (const Group& g : groups_)
+    for (const Group& g : groups_) {
+        if (g.along_members) {
+            // Each segment's box grown by its half depth: a point of one segment can touch
+            // another only where their boxes overlap.
+            std::vector<Eigen::Vector4d> boxes; // x_min, x_max, y_min, y_max
+            for (const Segment& s : g.segments) {
+                const Eigen::Vector2d a = position(s.a), b = position(s.b);
+                const double h = s.half_depth;
+                boxes.emplace_back(std::min(a[0], b[0]) - h, std::max(a[0], b[0]) + h, std::min(a[1], b[1]) - h, std::max(a[1], b[1]) + h);
+            }
+            const auto apart = [&](std::size_t i, std::size_t j) {
+                return boxes[i][1] < boxes[j][0] || boxes[j][1] < boxes[i][0] || boxes[i][3] < boxes[j][2] || boxes[j][3] < boxes[i][2];
+            };
+            for (std::size_t own = 0; own < g.segments.size(); ++own)
+                for (int p = 0; p < points_per_element; ++p) {
+                    const std::size_t first = found.size();
+                    for (std::size_t s = 0; s < g.segments.size(); ++s)
+                        if (!apart(own, s) && touch_along(g, own, p, g.segments[s], c)) found.push_back(c);
+                    serve_ends_once(found, first);
+                }
+            continue;
+        }
         for (std::size_t p = 0; p < g.nodes.size(); ++p) {
             const std::size_t first = found.size();
             for (const Segment& s : g.segments)
                 if (touch(g, p, s, c)) found.push_back(c);
-            // One contact per segment end, and none at an end where the node touches the
-            // interior of a segment that ends there (that one is nearer or as near).
-            auto end_is_served = [&](std::size_t k) {
-                const SurfaceContact& ck = found[k];
-                if (ck.nodes() != 2) return false;
-                for (std::size_t m = first; m < found.size(); ++m) {
-                    if (m == k) continue;
-                    const SurfaceContact& cm = found[m];
-                    if (cm.nodes() == 3 && (cm.segment[0] == ck.segment[0] || cm.segment[1] == ck.segment[0])) return true;
-                    if (cm.nodes() == 2 && cm.segment[0] == ck.segment[0] && m < k) return true;
-                }
-                return false;
-            };
-            std::vector<SurfaceContact> kept;
-            for (std::size_t k = first; k < found.size(); ++k)
-                if (!end_is_served(k)) kept.push_back(found[k]);
-            found.resize(first);
-            found.insert(found.end(), kept.begin(), kept.end());
+            serve_ends_once(found, first);
         }
+    }
 
     // Two segment ends that touch each other are one contact, though each pass finds it.
     {

@@ -9,6 +9,12 @@
 // (Wriggers, Computational Contact Mechanics, 2006, ch. 4: node-to-segment contact; here the
 // two-pass form, each node against the other surface). A node whose nearest point is a segment
 // end touches that end once, however many segments end there.
+// Along the members (acts_on = "members"), the points that press are 4 Gauss–Lobatto points of
+// each element (its ends and two inside), on its chord; each carries the penalty per unit length times half its weight
+// (the two passes make up the whole), so the surfaces press with k·penetration per unit length
+// and a contact zone grows a third of an element at a time instead of node by node (the
+// Gauss-point-to-segment form: Fischer & Wriggers, "Frictionless 2D contact formulations for
+// finite deformations based on the mortar method", 2005).
 #pragma once
 
 #include "model/model.hpp"
@@ -20,20 +26,28 @@
 namespace plastica {
 
 struct SurfaceContact {
-    int node = 0;               // the node that touches
+    int node = 0;               // the node that touches; along the members, the point's nearer element end
+    // The point that touches: (1 − eta)·point[0] + eta·point[1]; a node is point = {node, node}.
+    std::array<int, 2> point{0, 0};
+    double eta = 0.0;
+    int point_id = 0;           // the node, or a number past the nodes for a point along a member
     std::array<int, 2> segment; // the ends of the segment it touches; both the same for an end
     double xi = 0.0;            // where along the segment, 0 … 1
     double reach = 0.0;         // the sum of the two half depths
     double gap = 0.0;           // distance − reach: negative, the penetration
     double stiffness = 0.0;
     Eigen::Vector2d normal;     // unit, from the segment toward the node
-    // Internal force on the translations (x, y) of node, segment[0], segment[1] (6 entries; an
-    // end contact uses the first four), and its tangent.
-    Eigen::Matrix<double, 6, 1> force;
-    Eigen::Matrix<double, 6, 6> tangent;
-    int nodes() const { return segment[0] == segment[1] ? 2 : 3; }
+    // Internal force on the translations (x, y) of node (point[0]), segment[0], segment[1] and
+    // point[1] (a node's contact with an end uses the first four entries, with a segment the
+    // first six; a point along a member all eight, the same node twice where it touches an
+    // end), and its tangent.
+    Eigen::Matrix<double, 8, 1> force;
+    Eigen::Matrix<double, 8, 8> tangent;
+    bool along_member() const { return point[0] != point[1]; } // a point of an element, not a node
+    int nodes() const { return along_member() ? 4 : segment[0] == segment[1] ? 2 : 3; }
     // The nodes the force and tangent act on, in their order.
-    std::array<int, 3> node_list() const { return {node, segment[0], segment[1]}; }
+    std::array<int, 4> node_list() const { return {point[0], segment[0], segment[1], point[1]}; }
+    Eigen::Vector2d point_force() const { return force.head<2>() + force.tail<2>(); }
 };
 
 class SelfContact {
@@ -64,6 +78,7 @@ private:
     struct Segment {
         int a = 0, b = 0;
         double half_depth = 0.0;
+        double length = 0.0; // undeformed
     };
     struct Group {
         std::vector<Segment> segments;
@@ -72,9 +87,19 @@ private:
         // Per entry of nodes: the nodes nearer along the members than they could ever touch.
         std::vector<std::vector<int>> near;
         double stiffness = 0.0;
+        bool along_members = false;
+        int first_point_id = 0; // of its points along the members
+        std::vector<std::array<std::size_t, 2>> segment_ends; // per segment: its ends' entries in nodes
     };
     // The nearest point of segment s to node p; false if the pair does not touch.
     bool touch(const Group& group, std::size_t p, const Segment& s, SurfaceContact& out) const;
+    // The same for Gauss point g of segment `own`.
+    bool touch_along(const Group& group, std::size_t own, int g, const Segment& s, SurfaceContact& out) const;
+    // Keeps one contact per segment end among found[first …] (a point's contacts).
+    static void serve_ends_once(std::vector<SurfaceContact>& found, std::size_t first);
+    Eigen::Vector2d point_position(const SurfaceContact& c) const {
+        return (1.0 - c.eta) * position(c.point[0]) + c.eta * position(c.point[1]);
+    }
     // Its gap, normal, force and tangent at the current positions (the pair's kind kept).
     void evaluate_pair(SurfaceContact& c) const;
     Eigen::Vector2d position(int node) const { return {x0_[2 * node] + u_[3 * node], x0_[2 * node + 1] + u_[3 * node + 1]}; }

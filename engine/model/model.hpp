@@ -108,7 +108,11 @@ struct ElementSpec {
 // centre line, do not pass through each other (frictionless, penalty; contact/self_contact.hpp).
 struct SelfContactSpec {
     std::vector<int> elements;
-    double stiffness = 0.0; // force per unit penetration; 0: SelfContact's default from the members
+    // Force per unit penetration (per unit length too where the surfaces act along the
+    // members); 0: SelfContact's default from the members.
+    double stiffness = 0.0;
+    // Points along each member press (Gauss points), not only its nodes.
+    bool along_members = false;
 };
 
 struct Support {

@@ -76,7 +76,7 @@ OutputGroup step_field_arrays() {
                 {name::step, F, R, 1, Quantity::none, When::always, "step number"},
                 {name::iterations, F, R, 1, Quantity::none, When::always, "Newton iterations of the step"},
                 {name::contact_count, F, R, 1, Quantity::none, When::always, "nodes in contact"},
-                {name::surface_contact_count, F, R, 1, Quantity::none, When::self_contact, "pairs of surfaces in contact (a node against a segment)"},
+                {name::surface_contact_count, F, R, 1, Quantity::none, When::self_contact, "pairs of surfaces in contact (a node, or a point along a member, against a segment)"},
                 {name::hinge_count, F, R, 1, Quantity::none, When::always, "element ends yielding or fully plastic"},
                 {name::stage, F, R, 1, Quantity::none, When::staged, "1 for [analysis], then 2, 3, … for each [[stage]]"},
                 {name::pattern_factors, F, R, 1, Quantity::none, When::patterns, "each load pattern's factor, one value per pattern in the order of pattern_names"},
