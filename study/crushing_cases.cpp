@@ -81,16 +81,21 @@ void append_crushing_cases(std::vector<StabilityCase>& cases) {
                                  within_deruntz_hodge(355.0 * h * h / 4.0, 0.95, 1.07)});
             }
     // The same ring with the paper's law (elastic–perfectly plastic fibres, their default 30
-    // layers), the scene's own plates along the members: within 0.95–1.05 of DeRuntz & Hodge
-    // (tests/test_member_contact.cpp measures 0.981–1.018).
-    for (const double r_over_h : {10.0, 20.0, 40.0})
-        for (const std::string scheme : {"load_control", "displacement_control", "arc_length"}) {
-            const double h = 100.0 / r_over_h;
-            Edits edits = scheme_edits(scheme, "130.0");
-            edits.insert(edits.end(), {perfectly_plastic, {"h = 5.0", "h = " + std::to_string(h)}});
-            cases.push_back({"steel ring crushed between plates, perfectly plastic fibres", r_over_h_label(r_over_h) + scheme_label(scheme),
-                             edited(ring, edits), done, within_deruntz_hodge(355.0 * h * h / 4.0, 0.95, 1.05)});
-        }
+    // layers; or refined hinges, which take the steps their mechanism stops with stiffened
+    // capacity rows), the scene's own plates along the members: within 0.95–1.05 of DeRuntz &
+    // Hodge (tests/test_member_contact.cpp measures 0.981–1.018).
+    for (const bool hinges : {false, true})
+        for (const double r_over_h : {10.0, 20.0, 40.0})
+            for (const std::string scheme : {"load_control", "displacement_control", "arc_length"}) {
+                const double h = 100.0 / r_over_h;
+                Edits edits = scheme_edits(scheme, "130.0");
+                edits.insert(edits.end(), {perfectly_plastic, {"h = 5.0", "h = " + std::to_string(h)}});
+                if (hinges) edits.push_back({"plasticity = \"distributed\"", "plasticity = \"hinges\""});
+                cases.push_back({hinges ? "steel ring crushed between plates, perfectly plastic hinges"
+                                        : "steel ring crushed between plates, perfectly plastic fibres",
+                                 r_over_h_label(r_over_h) + scheme_label(scheme), edited(ring, edits), done,
+                                 within_deruntz_hodge(355.0 * h * h / 4.0, 0.95, 1.05)});
+            }
     // The flattening test: the steel ring pressed on until its walls meet (self-contact), under
     // load control of the plate's travel (as shipped), displacement control of the top and arc length.
     for (const std::string scheme : {"load_control", "displacement_control", "arc_length"})
@@ -103,6 +108,13 @@ void append_crushing_cases(std::vector<StabilityCase>& cases) {
         Edits edits = scheme_edits(scheme, "195.0");
         edits.push_back(perfectly_plastic);
         cases.push_back({"steel pipe ring flattened until its walls meet, perfectly plastic", scheme_label(scheme), edited(pipe, edits), done, walls_met});
+    }
+    // The same in perfectly plastic hinges, under all three schemes.
+    for (const std::string scheme : {"load_control", "displacement_control", "arc_length"}) {
+        Edits edits = scheme_edits(scheme, "195.0");
+        edits.insert(edits.end(), {perfectly_plastic, {"plasticity = \"distributed\"", "plasticity = \"hinges\""}});
+        cases.push_back({"steel pipe ring flattened until its walls meet, perfectly plastic hinges", scheme_label(scheme), edited(pipe, edits),
+                         done, walls_met});
     }
 }
 
