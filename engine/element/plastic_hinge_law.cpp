@@ -77,7 +77,8 @@ void PlasticHingeLaw::linearise_capacity(double N) {
         row.a[0] = -v.slope / moment_scale_;
         row.a[1 + end] = (end == 0 ? -s : s) / moment_scale_;
         row.limit = (v.moment - v.slope * n) / moment_scale_ + hardened_[r];
-        row.hardening = std::max(row_hardening_, stiffened_) / ends_served_.capacity[end] * row.a.dot(k_elastic_ * row.a);
+        const double hardening = stiffened_ > 0.0 ? std::max(stiffened_, stiffened_own_factor * row_hardening_) : row_hardening_;
+        row.hardening = hardening / ends_served_.capacity[end] * row.a.dot(k_elastic_ * row.a);
     }
 }
 

@@ -33,6 +33,10 @@ namespace plastica {
 class PlasticHingeLaw final : public TrialTangentLaw {
 public:
     static constexpr double regularising_hardening = 1e-6;
+    // Stiffened (stiffen_capacity), the rows harden by at least this many times their own too: a
+    // hardening law's mechanism (1e-4 hinges flattening a pipe under load control of the plate)
+    // stops where its own hardening holds it no better.
+    static constexpr double stiffened_own_factor = 10.0;
 
     // ends_served: for each end, how many element ends its capacity rows and its pseudo-spring
     // stand for (analysis/hinge_allocation.hpp): 0, none; 1, its own; 2, its own and the other
