@@ -12,8 +12,6 @@ namespace plastica {
 
 namespace {
 
-using Vector6 = Eigen::Matrix<double, 6, 1>;
-using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
 // Gauss–Lobatto points on [0, 1] and their weights: exact for the penalty of a gap linear along
 // the element (a quadratic); the ends among them, so that a node standing on a surface holds
@@ -22,7 +20,6 @@ constexpr int points_per_element = 4;
 constexpr double gauss_eta[points_per_element] = {0.0, 0.2763932022500210, 0.7236067977499790, 1.0};
 constexpr double gauss_weight[points_per_element] = {1.0 / 12.0, 5.0 / 12.0, 5.0 / 12.0, 1.0 / 12.0};
 
-double perp_dot(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a[0] * b[1] - a[1] * b[0]; }
 
 // The nodes within `radius` of `from` along the elements (undeformed lengths), sorted.
 std::vector<int> nodes_within(int from, double radius, const std::vector<std::vector<std::pair<int, double>>>& links) {
@@ -120,13 +117,9 @@ SelfContact::SelfContact(const Model& model) {
     }
 }
 
-bool SelfContact::touch(const Group& group, std::size_t p, const Segment& s, SurfaceContact& out) const {
-    const int node = group.nodes[p];
-    const std::vector<int>& near = group.near[p];
-    if (std::binary_search(near.begin(), near.end(), s.a) || std::binary_search(near.begin(), near.end(), s.b)) return false;
-    const Eigen::Vector2d x = position(node), a = position(s.a), b = position(s.b);
-    const double reach = group.node_half_depth[p] + s.half_depth;
-    // Cheap rejection first: the node is farther than the reach from the segment's box.
+bool SelfContact::reaches(const Eigen::Vector2d& x, double reach, const Segment& s, SurfaceContact& out) const {
+    const Eigen::Vector2d a = position(s.a), b = position(s.b);
+    // Cheap rejection first: the point is farther than the reach from the segment's box.
     if (x[0] < std::min(a[0], b[0]) - reach || x[0] > std::max(a[0], b[0]) + reach ||
         x[1] < std::min(a[1], b[1]) - reach || x[1] > std::max(a[1], b[1]) + reach)
         return false;
@@ -136,105 +129,43 @@ bool SelfContact::touch(const Group& group, std::size_t p, const Segment& s, Sur
     const double distance = toward.norm();
     // Centre lines that meet have no normal: the crossing check stops such a run.
     if (distance - reach > 0.0 || distance <= 1e-9 * reach) return false;
-    out.node = node;
-    out.point = {node, node};
-    out.eta = 0.0;
-    out.point_id = node;
     out.segment = xi <= 0.0 ? std::array<int, 2>{s.a, s.a} : xi >= 1.0 ? std::array<int, 2>{s.b, s.b} : std::array<int, 2>{s.a, s.b};
     out.xi = xi;
     out.reach = reach;
     out.gap = distance - reach;
-    out.stiffness = group.stiffness;
     out.normal = toward / distance;
+    return true;
+}
+
+bool SelfContact::touch(const Group& group, std::size_t p, const Segment& s, SurfaceContact& out) const {
+    const int node = group.nodes[p];
+    const std::vector<int>& near = group.near[p];
+    if (std::binary_search(near.begin(), near.end(), s.a) || std::binary_search(near.begin(), near.end(), s.b)) return false;
+    if (!reaches(position(node), group.node_half_depth[p] + s.half_depth, s, out)) return false;
+    out.node = node;
+    out.point = {node, node};
+    out.eta = 0.0;
+    out.point_id = node;
+    out.stiffness = group.stiffness;
     return true;
 }
 
 bool SelfContact::touch_along(const Group& group, std::size_t own, int g, const Segment& s, SurfaceContact& out) const {
     const Segment& mine = group.segments[own];
     const double eta = gauss_eta[g];
-    const Eigen::Vector2d x = (1.0 - eta) * position(mine.a) + eta * position(mine.b), a = position(s.a), b = position(s.b);
-    const double reach = mine.half_depth + s.half_depth;
-    // The cheap rejection first (the box), then the neighbours along the members.
-    if (x[0] < std::min(a[0], b[0]) - reach || x[0] > std::max(a[0], b[0]) + reach ||
-        x[1] < std::min(a[1], b[1]) - reach || x[1] > std::max(a[1], b[1]) + reach)
-        return false;
+    // The box (in reaches) first, then the neighbours along the members.
+    if (!reaches((1.0 - eta) * position(mine.a) + eta * position(mine.b), mine.half_depth + s.half_depth, s, out)) return false;
     for (std::size_t end : group.segment_ends[own]) {
         const std::vector<int>& near = group.near[end];
         if (std::binary_search(near.begin(), near.end(), s.a) || std::binary_search(near.begin(), near.end(), s.b)) return false;
     }
-    const Eigen::Vector2d e = b - a;
-    const double xi = std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-    const Eigen::Vector2d toward = x - (a + xi * e);
-    const double distance = toward.norm();
-    if (distance - reach > 0.0 || distance <= 1e-9 * reach) return false;
     out.node = eta < 0.5 ? mine.a : mine.b;
     out.point = {mine.a, mine.b};
     out.eta = eta;
     out.point_id = group.first_point_id + static_cast<int>(own) * points_per_element + g;
-    out.segment = xi <= 0.0 ? std::array<int, 2>{s.a, s.a} : xi >= 1.0 ? std::array<int, 2>{s.b, s.b} : std::array<int, 2>{s.a, s.b};
-    out.xi = xi;
-    out.reach = reach;
-    out.gap = distance - reach;
     // Half the point's share of the element: the other surface's points make up the rest.
     out.stiffness = 0.5 * group.stiffness * gauss_weight[g] * mine.length;
-    out.normal = toward / distance;
     return true;
-}
-
-void SelfContact::evaluate_pair(SurfaceContact& c) const {
-    // Π = ½·k·g², g = d − reach: force k·g·∇d, tangent k·∇d∇dᵀ + k·g·∇²d, over the point x and
-    // the segment's ends; a point along a member then shares its part between its element's
-    // ends as (1 − eta, eta).
-    const Eigen::Vector2d x = point_position(c);
-    Vector6 grad = Vector6::Zero();
-    Matrix6 hess = Matrix6::Zero();
-    if (c.segment[0] == c.segment[1]) { // a segment end
-        const Eigen::Vector2d d = x - position(c.segment[0]);
-        const double distance = d.norm();
-        c.gap = distance - c.reach;
-        c.normal = d / distance;
-        grad.head<2>() = c.normal;
-        grad.segment<2>(2) = -c.normal;
-        const Eigen::Matrix2d q = (Eigen::Matrix2d::Identity() - c.normal * c.normal.transpose()) / distance;
-        hess.block<2, 2>(0, 0) = q;
-        hess.block<2, 2>(0, 2) = -q;
-        hess.block<2, 2>(2, 0) = -q;
-        hess.block<2, 2>(2, 2) = q;
-    } else {
-        // d = σ·A/L, A = e × r the doubled area of (a, b, x), e = b − a, r = x − a, L = |e|.
-        const Eigen::Vector2d a = position(c.segment[0]), b = position(c.segment[1]);
-        const Eigen::Vector2d e = b - a, r = x - a;
-        const double L = e.norm(), area = perp_dot(e, r);
-        const double sigma = area >= 0.0 ? 1.0 : -1.0;
-        const Eigen::Vector2d t = e / L;
-        const Eigen::Vector2d je(-e[1], e[0]), jr(-r[1], r[0]);
-        // Over (x, a, b): ∂e = (0, −I, I), ∂r = (I, −I, 0).
-        const double ce[3] = {0.0, -1.0, 1.0}, cr[3] = {1.0, -1.0, 0.0};
-        Vector6 grad_area, grad_length;
-        grad_area << je, jr - je, -jr;
-        for (int i = 0; i < 3; ++i) grad_length.segment<2>(2 * i) = ce[i] * t;
-        Eigen::Matrix2d m;
-        m << 0.0, 1.0, -1.0, 0.0; // A = eᵀ·m·r
-        const Eigen::Matrix2d p = (Eigen::Matrix2d::Identity() - t * t.transpose()) / L;
-        Matrix6 hess_area, hess_length;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) {
-                hess_area.block<2, 2>(2 * i, 2 * j) = ce[i] * cr[j] * m + cr[i] * ce[j] * m.transpose();
-                hess_length.block<2, 2>(2 * i, 2 * j) = ce[i] * ce[j] * p;
-            }
-        c.gap = sigma * area / L - c.reach;
-        grad = sigma * (grad_area / L - area * grad_length / (L * L));
-        hess = sigma * (hess_area / L - (grad_area * grad_length.transpose() + grad_length * grad_area.transpose()) / (L * L) -
-                        area * hess_length / (L * L) + 2.0 * area * grad_length * grad_length.transpose() / (L * L * L));
-        c.normal = sigma * Eigen::Vector2d(-t[1], t[0]);
-    }
-    // Slots: point[0], segment[0], segment[1], point[1]; x = (1 − eta)·point[0] + eta·point[1].
-    Eigen::Matrix<double, 6, 8> spread = Eigen::Matrix<double, 6, 8>::Zero();
-    spread.block<2, 2>(0, 0) = (1.0 - c.eta) * Eigen::Matrix2d::Identity();
-    spread.block<2, 2>(0, 6) = c.eta * Eigen::Matrix2d::Identity();
-    spread.block<4, 4>(2, 2).setIdentity();
-    c.force = c.stiffness * c.gap * spread.transpose() * grad;
-    c.tangent = c.stiffness * spread.transpose() * (grad * grad.transpose() + c.gap * hess) * spread;
 }
 
 void SelfContact::serve_ends_once(std::vector<SurfaceContact>& found, std::size_t first) {

@@ -10,13 +10,15 @@
 // two-pass form, each node against the other surface). A node whose nearest point is a segment
 // end touches that end once, however many segments end there.
 // Along the members (acts_on = "members"), the points that press are 4 Gauss–Lobatto points of
-// each element (its ends and two inside), on its chord; each carries the penalty per unit length times half its weight
-// (the two passes make up the whole), so the surfaces press with k·penetration per unit length
-// and a contact zone grows a third of an element at a time instead of node by node (the
-// Gauss-point-to-segment form: Fischer & Wriggers, "Frictionless 2D contact formulations for
-// finite deformations based on the mortar method", 2005).
+// each element (its ends and two inside), on its chord; each carries the penalty per unit
+// length times half its weight (the two passes make up the whole), so the surfaces press with
+// k·penetration per unit length and a contact zone grows a third of an element at a time
+// instead of node by node (the Gauss-point-to-segment form: Fischer & Wriggers, "Frictionless
+// 2D contact formulations for finite deformations based on the mortar method", 2005). One
+// pair's force and tangent: contact/surface_pair.hpp.
 #pragma once
 
+#include "contact/surface_pair.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -24,31 +26,6 @@
 #include <vector>
 
 namespace plastica {
-
-struct SurfaceContact {
-    int node = 0;               // the node that touches; along the members, the point's nearer element end
-    // The point that touches: (1 − eta)·point[0] + eta·point[1]; a node is point = {node, node}.
-    std::array<int, 2> point{0, 0};
-    double eta = 0.0;
-    int point_id = 0;           // the node, or a number past the nodes for a point along a member
-    std::array<int, 2> segment; // the ends of the segment it touches; both the same for an end
-    double xi = 0.0;            // where along the segment, 0 … 1
-    double reach = 0.0;         // the sum of the two half depths
-    double gap = 0.0;           // distance − reach: negative, the penetration
-    double stiffness = 0.0;
-    Eigen::Vector2d normal;     // unit, from the segment toward the node
-    // Internal force on the translations (x, y) of node (point[0]), segment[0], segment[1] and
-    // point[1] (a node's contact with an end uses the first four entries, with a segment the
-    // first six; a point along a member all eight, the same node twice where it touches an
-    // end), and its tangent.
-    Eigen::Matrix<double, 8, 1> force;
-    Eigen::Matrix<double, 8, 8> tangent;
-    bool along_member() const { return point[0] != point[1]; } // a point of an element, not a node
-    int nodes() const { return along_member() ? 4 : segment[0] == segment[1] ? 2 : 3; }
-    // The nodes the force and tangent act on, in their order.
-    std::array<int, 4> node_list() const { return {point[0], segment[0], segment[1], point[1]}; }
-    Eigen::Vector2d point_force() const { return force.head<2>() + force.tail<2>(); }
-};
 
 class SelfContact {
 public:
@@ -91,6 +68,9 @@ private:
         int first_point_id = 0; // of its points along the members
         std::vector<std::array<std::size_t, 2>> segment_ends; // per segment: its ends' entries in nodes
     };
+    // Whether a point at x comes within `reach` of segment s: then the pair's segment (or end),
+    // xi, reach, gap and normal.
+    bool reaches(const Eigen::Vector2d& x, double reach, const Segment& s, SurfaceContact& out) const;
     // The nearest point of segment s to node p; false if the pair does not touch.
     bool touch(const Group& group, std::size_t p, const Segment& s, SurfaceContact& out) const;
     // The same for Gauss point g of segment `own`.
@@ -101,7 +81,9 @@ private:
         return (1.0 - c.eta) * position(c.point[0]) + c.eta * position(c.point[1]);
     }
     // Its gap, normal, force and tangent at the current positions (the pair's kind kept).
-    void evaluate_pair(SurfaceContact& c) const;
+    void evaluate_pair(SurfaceContact& c) const {
+        press(c, point_position(c), position(c.segment[0]), position(c.segment[1]));
+    }
     Eigen::Vector2d position(int node) const { return {x0_[2 * node] + u_[3 * node], x0_[2 * node + 1] + u_[3 * node + 1]}; }
 
     std::vector<Group> groups_;
