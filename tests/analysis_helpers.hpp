@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plastica::testing {
@@ -46,6 +48,17 @@ inline std::string scene_file_text(const std::string& relative) {
 }
 
 inline Run run_scene_file(const std::string& relative) { return run_scene(scene_file_text(relative)); }
+
+// A scene file of the source tree with each `from` (found once) replaced by its `to`.
+inline std::string edited_scene(const std::string& relative, const std::vector<std::pair<std::string, std::string>>& edits) {
+    std::string text = scene_file_text(relative);
+    for (const auto& [from, to] : edits) {
+        const std::size_t at = text.find(from);
+        if (at == std::string::npos) throw std::runtime_error(relative + " has no '" + from + "'");
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
 
 inline Run run_scene(const std::string& toml) { return run_model(read_scene_text(toml, "test.toml")); }
 

@@ -20,17 +20,6 @@ using namespace plastica::testing;
 
 namespace {
 
-// A scene file of the source tree with each `from` (found once) replaced by its `to`.
-std::string edited_scene(const std::string& relative, const std::vector<std::pair<std::string, std::string>>& edits) {
-    std::string text = scene_file_text(relative);
-    for (const auto& [from, to] : edits) {
-        const std::size_t at = text.find(from);
-        REQUIRE(at != std::string::npos);
-        text.replace(at, from.size(), to);
-    }
-    return text;
-}
-
 // The overlap by brute force: the Hermite curve sampled at the midpoints of n pieces.
 MemberOverlap sampled_overlap(const MemberCurve& m, const Eigen::Vector2d& point, const Eigen::Vector2d& normal, double k, int n) {
     MemberOverlap out;

@@ -189,7 +189,7 @@ private:
     double lambda_ = 0.0;
     double peak_lambda_ = 0.0; // largest |λ| converged so far: the residual's reference
     int failures_in_step_ = 0; // attempts of the coming step that failed
-    // The coming step is taken with the hinges' capacity rows stiffened (after_failure).
+    // The coming step is taken with the hinges' capacity rows or the fibre members stiffened (after_failure).
     bool stiffened_step_ = false;
     // An arc-length corrector's line missed the arc in this step (it was cut for that), and
     // the count of steps in a row before it that were cut for that.

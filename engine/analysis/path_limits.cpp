@@ -18,14 +18,16 @@ namespace {
 // A step that failed after three cuts with a round-off floor this many times the residual
 // tolerance stops the run: no smaller increment lowers that floor.
 constexpr double hopeless_floor = 1e3;
-// Where perfectly plastic hinges let no increment of a step converge, the step is taken again
-// from the stage's increment with their capacity rows hardening by this share of the elastic
-// stiffness (a step's worth of it is remembered). Their own regularising 1e-6 leaves a
-// mechanism that Newton's first correction runs off along. Measured over the crushed rings
-// (R/h 10, 20, 40, three schemes): 1e-5 and 3e-5 leave two arc-length runs stopped or turned
-// back, 1e-4 completes all nine with 0-9 such steps of 500-900; tried at every failed attempt
-// instead, 1e-4 left one run at its step limit and 1e-3 raised the loads by up to 12 %.
-constexpr double stiffened_hinge_hardening = 1e-4;
+// Where perfectly plastic hinges or fibres let no increment of a step converge, the step is
+// taken again from the stage's increment with the hinges' capacity rows hardening by this share
+// of the elastic stiffness, and the fibre members stiffened by it on the step's increment (a
+// step's worth of either is remembered). The hinges' own regularising 1e-6 leaves a mechanism
+// that Newton's first correction runs off along; so does a fully plastic crown that has left
+// the plate. Measured over the crushed rings with hinges (R/h 10, 20, 40, three schemes): 1e-5
+// and 3e-5 leave two arc-length runs stopped or turned back, 1e-4 completes all nine with 0-9
+// such steps of 500-900; tried at every failed attempt instead, 1e-4 left one run at its step
+// limit and 1e-3 raised the loads by up to 12 %.
+constexpr double stiffened_step_hardening = 1e-4;
 
 } // namespace
 
@@ -52,11 +54,12 @@ std::optional<StopReason> PathFollowing::after_failure(const NewtonResult& outco
                           floor_at_failure.total >= hopeless_floor * a.residual_tolerance;
     const bool giving_up = std::abs(0.5 * step_h) < a.min_increment || hopeless;
     // Only where λ moves plates or prescribed displacements alone: the travel the user drives
-    // is followed past a hinge mechanism, where under forces the same mechanism is the limit
-    // load and a stiffened hinge would carry the load past it.
-    if (giving_up && !stiffened_step_ && model_.has_plasticity(Plasticity::hinges) && !model_.has_forces(factors_.driven)) {
+    // is followed past a plastic mechanism, where under forces the same mechanism is the limit
+    // load and a stiffened member would carry the load past it.
+    const bool plastic = model_.has_plasticity(Plasticity::hinges) || model_.has_plasticity(Plasticity::distributed);
+    if (giving_up && !stiffened_step_ && plastic && !model_.has_forces(factors_.driven)) {
         roll_back(u_saved, lambda_saved);
-        system_.stiffen_capacity(stiffened_hinge_hardening);
+        system_.stiffen_capacity(stiffened_step_hardening);
         stiffened_step_ = true;
         failures_in_step_ = 0;
         h = std::copysign(std::abs(a.initial_increment), step_h);

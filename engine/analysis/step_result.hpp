@@ -118,8 +118,8 @@ struct RunSummary {
     // Converged steps of adaptive increments taken again smaller because they carried a hinge
     // section too far into its yielding range (not counted as cut).
     int refined_steps = 0;
-    // Steps that hinges took with their capacity rows stiffened, where the perfectly plastic
-    // hinges' tangent let no increment converge (PathFollowing::after_failure).
+    // Steps taken with the hinges' capacity rows or the fibre members stiffened, where a perfectly
+    // plastic mechanism let no increment converge (PathFollowing::after_failure).
     int stiffened_steps = 0;
     int accepted_by_residual = 0;
     int accepted_by_stagnation = 0;

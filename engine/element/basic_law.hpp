@@ -62,9 +62,10 @@ public:
     // The next increment's predictor, taken at the committed state, follows the elastic
     // stiffness instead of continued loading (where the load turns back); until the next commit.
     virtual void predict_unloading() {}
-    // A hinge's capacity rows harden by at least `ratio` of its elastic stiffness (and more than
-    // their own), for a step the path cannot take with the law's own hardening
-    // (analysis/path_limits.cpp); 0 restores it.
+    // For a step the path cannot take with the law's own hardening (analysis/path_limits.cpp): a
+    // hinge's capacity rows harden by at least `ratio` of its elastic stiffness (and more than
+    // their own); a fibre member adds `ratio` of its elastic stiffness on the step's increment
+    // (element/step_stiffening.hpp). 0 restores the law; what the step gathered stays.
     virtual void stiffen_capacity(double /*ratio*/) {}
     virtual bool states_consistent() const { return true; }
     // How far the trial step carries a section into its yielding range, as the rise of

@@ -23,7 +23,8 @@ DistributedPlasticityLaw::DistributedPlasticityLaw(const SectionSpec& section, d
       regular_ea_(axial == Axial::equilibrated ? std::max(regularisation, 1e-6) * section.E * section.area : 0.0),
       // The yield strain (1e-3 for an elastic section).
       strain_scale_(section.steel ? section.steel->fy / section.steel->E : 1e-3),
-      force_scale_(section.E * section.area * strain_scale_) {
+      force_scale_(section.E * section.area * strain_scale_),
+      stiffening_(elastic_basic_stiffness(section.E * section.area, section.E * section.inertia, L0)) {
     if (axial == Axial::equilibrated) k_regular_(0, 0) = 0.0;
     const FibreSection prototype(section);
     for (const QuadraturePoint& p : gauss_legendre(integration_points))
@@ -123,7 +124,12 @@ void DistributedPlasticityLaw::uniform_strain_response(const Eigen::Vector3d& e,
 }
 
 void DistributedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
-    if (axial_ == Axial::uniform_strain) return uniform_strain_response(e, q, k);
+    if (axial_ == Axial::uniform_strain) uniform_strain_response(e, q, k);
+    else equilibrated_response(e, q, k);
+    stiffening_.add(e, q, k);
+}
+
+void DistributedPlasticityLaw::equilibrated_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k) {
     // Element iterations on the sections' axial strains: each step moves every section to the
     // common N that, at the sections' axial stiffnesses, makes the strains add up to the chord's.
     // They start from the last strains shifted to add up to it (exact for elastic sections), and
@@ -192,6 +198,7 @@ void DistributedPlasticityLaw::commit() {
         p.committed = p.trial;
         p.committed_strain = p.strain;
     }
+    stiffening_.commit();
 }
 
 void DistributedPlasticityLaw::revert() {
@@ -200,6 +207,7 @@ void DistributedPlasticityLaw::revert() {
         p.trial = p.committed;
         p.strain = p.committed_strain;
     }
+    stiffening_.revert();
 }
 
 std::vector<SectionReport> DistributedPlasticityLaw::sections() const {

@@ -20,6 +20,7 @@
 
 #include "element/basic_law.hpp"
 #include "element/quadrature.hpp"
+#include "element/step_stiffening.hpp"
 #include "section/fibre_section.hpp"
 
 #include <vector>
@@ -46,6 +47,7 @@ public:
     // frozen, then checked at equilibrium and re-decided where the state contradicts them.
     void freeze_states(bool frozen) override { frozen_ = frozen; }
     bool states_consistent() const override { return consistent_; }
+    void stiffen_capacity(double ratio) override { stiffening_.set(ratio); }
     std::unique_ptr<BasicLaw> clone() const override {
         return std::make_unique<DistributedPlasticityLaw>(*this);
     }
@@ -72,6 +74,8 @@ private:
     bool settle_axial_safeguarded(double chord_strain);
     // The displacement-based law with one strain per member: q = Σ w L0 Bᵀ s(B e), k = Σ w L0 Bᵀ k_s B.
     void uniform_strain_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k);
+    // The law with one N along the member (the header's formulas).
+    void equilibrated_response(const Eigen::Vector3d& e, Eigen::Vector3d& q, Eigen::Matrix3d& k);
     Axial axial_;
     double L0_;
     Eigen::Matrix3d k_regular_; // the parallel elastic stiffness (equilibrated: bending only, the axial part is in each section)
@@ -79,6 +83,7 @@ private:
     double strain_scale_;       // the yield strain: the scale of the sections' axial strains
     double force_scale_;        // the squash load EA·ε_y
     std::vector<IntegrationPoint> points_;
+    StepStiffening stiffening_;
     bool frozen_ = false;
     bool consistent_ = true;
 };

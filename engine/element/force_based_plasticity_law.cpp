@@ -24,7 +24,8 @@ constexpr double regular_axial = 1e-4;
 } // namespace
 
 ForceBasedPlasticityLaw::ForceBasedPlasticityLaw(const SectionSpec& section, double L0, int integration_points)
-    : L0_(L0), regular_(regular_axial * section.E * section.area, regular_bending * section.E * section.inertia) {
+    : L0_(L0), regular_(regular_axial * section.E * section.area, regular_bending * section.E * section.inertia),
+      stiffening_(elastic_basic_stiffness(section.E * section.area, section.E * section.inertia, L0)) {
     const double yield_strain = section.steel ? section.steel->fy / section.steel->E : 1e-3;
     const double yield_curvature = 2.0 * yield_strain / section.surface_depth();
     work_scale_ = (section.E * section.area * yield_strain * yield_strain + section.E * section.inertia * yield_curvature * yield_curvature) * L0;
@@ -134,6 +135,7 @@ void ForceBasedPlasticityLaw::trial_response(const Eigen::Vector3d& e, Eigen::Ve
         q = q_c_;
         k = Eigen::Matrix3d::Identity() * (regular_[1] / L0_);
     }
+    stiffening_.add(e, q, k);
 }
 
 void ForceBasedPlasticityLaw::commit() {
@@ -144,6 +146,7 @@ void ForceBasedPlasticityLaw::commit() {
     }
     q_c_ = q_t_;
     settled_ = true;
+    stiffening_.commit();
 }
 
 void ForceBasedPlasticityLaw::revert() {
@@ -155,6 +158,7 @@ void ForceBasedPlasticityLaw::revert() {
     q_t_ = q_c_;
     settled_ = true;
     sections_current_ = false;
+    stiffening_.revert();
 }
 
 std::vector<SectionReport> ForceBasedPlasticityLaw::sections() const {

@@ -30,6 +30,7 @@
 
 #include "element/basic_law.hpp"
 #include "element/quadrature.hpp"
+#include "element/step_stiffening.hpp"
 #include "section/fibre_section.hpp"
 
 #include <vector>
@@ -50,6 +51,7 @@ public:
     }
     // False also while the element iterations have not settled: Newton may not accept then.
     bool states_consistent() const override { return consistent_ && settled_; }
+    void stiffen_capacity(double ratio) override { stiffening_.set(ratio); }
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<ForceBasedPlasticityLaw>(*this); }
 
 private:
@@ -78,6 +80,7 @@ private:
     Eigen::Vector2d regular_;            // the parallel section stiffness (EA, EI shares)
     double work_scale_;                  // N_y·ε_y·L0 + M_y·κ_y·L0: what "small" means for the iterations
     std::vector<IntegrationPoint> points_;
+    StepStiffening stiffening_;
     Eigen::Vector3d q_t_ = Eigen::Vector3d::Zero(), q_c_ = Eigen::Vector3d::Zero();
     Eigen::Matrix3d flexibility_ = Eigen::Matrix3d::Zero(); // F of the last element iteration
     bool frozen_ = false;

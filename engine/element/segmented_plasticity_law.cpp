@@ -20,7 +20,8 @@ constexpr double segment_regularisation = 1e-6;
 template <int InnerDofs>
 SegmentedPlasticityLaw<InnerDofs>::SegmentedPlasticityLaw(const SectionSpec& section, double L0, int segments,
                                                           int integration_points, double grading)
-    : L0_(L0), segment_length_(L0 / segments), EA_(section.E * section.area), EI_(section.E * section.inertia) {
+    : L0_(L0), segment_length_(L0 / segments), EA_(section.E * section.area), EI_(section.E * section.inertia),
+      stiffening_(elastic_basic_stiffness(EA_, EI_, L0)) {
     const std::size_t n = static_cast<std::size_t>(segments), m = n - 1;
     // Lengths grow by `grading` from either end toward the middle.
     std::vector<double> length(n);
@@ -205,6 +206,7 @@ void SegmentedPlasticityLaw<InnerDofs>::trial_response(const Eigen::Vector3d& e,
         if (!std::isfinite(residual)) break;
         inner_converged_ = residual <= inner_tolerance * scale;
     }
+    stiffening_.add(e, q, k);
 }
 
 template <int InnerDofs>
@@ -213,6 +215,7 @@ void SegmentedPlasticityLaw<InnerDofs>::commit() {
     e_c_ = e_t_;
     inner_c_ = inner_t_;
     condensation_c_ = condensation_t_;
+    stiffening_.commit();
 }
 
 template <int InnerDofs>
@@ -222,6 +225,7 @@ void SegmentedPlasticityLaw<InnerDofs>::revert() {
     inner_t_ = inner_c_;
     condensation_t_ = condensation_c_;
     inner_converged_ = true;
+    stiffening_.revert();
 }
 
 template <int InnerDofs>

@@ -39,6 +39,7 @@
 
 #include "element/basic_law.hpp"
 #include "element/distributed_plasticity_law.hpp"
+#include "element/step_stiffening.hpp"
 
 #include <vector>
 
@@ -58,6 +59,7 @@ public:
     // they were released: 21 cut steps on the ring against none).
     // False while the inner nodes are not in equilibrium: Newton then may not accept.
     bool states_consistent() const override { return inner_converged_; }
+    void stiffen_capacity(double ratio) override { stiffening_.set(ratio); }
     std::unique_ptr<BasicLaw> clone() const override { return std::make_unique<SegmentedPlasticityLaw>(*this); }
 
 private:
@@ -81,6 +83,7 @@ private:
     double L0_, segment_length_; // the element's, and its segments' mean length
     double EA_, EI_; // elastic, for the scale of the inner residual test
     std::vector<DistributedPlasticityLaw> segments_;
+    StepStiffening stiffening_;
     std::vector<double> bounds_;                    // the segments' ends, from node i
     // Segment s's basic deformations [u_b − u_a, θ_a − β, θ_b − β], β = (w_b − w_a)/l_s, are
     // basic_map_[s]·e + near_[s]·(w, θ)_a + far_[s]·(w, θ)_b.
