@@ -73,8 +73,8 @@ void append_crushing_cases(std::vector<StabilityCase>& cases) {
                 const double h = 100.0 / r_over_h, k = 1e4 * 210000.0 * h * h * h / 12.0 / 1e6 / (M_PI * 100.0 / 50.0);
                 Edits edits = scheme_edits(scheme, "130.0");
                 edits.insert(edits.end(), {{"h = 5.0", "h = " + std::to_string(h)},
-                                           {"ky = \"3482 MPa\"", "ky = " + std::to_string(k)},
-                                           {"ky = \"3482 MPa\"", "ky = " + std::to_string(k)}});
+                                           {"ky = \"350 MPa\"", "ky = " + std::to_string(k)},
+                                           {"ky = \"350 MPa\"", "ky = " + std::to_string(k)}});
                 if (hinges) edits.push_back({"plasticity = \"distributed\"", "plasticity = \"hinges\""});
                 cases.push_back({hinges ? "steel ring crushed between plates, hardening hinges" : "steel ring crushed between plates, fibre sections",
                                  r_over_h_label(r_over_h) + scheme_label(scheme), edited(ring, edits), done,
@@ -83,7 +83,9 @@ void append_crushing_cases(std::vector<StabilityCase>& cases) {
     // The same ring with the paper's law (elastic–perfectly plastic fibres, their default 30
     // layers; or refined hinges, which take the steps their mechanism stops with stiffened
     // capacity rows), the scene's own plates along the members: within 0.95–1.05 of DeRuntz &
-    // Hodge (tests/test_member_contact.cpp measures 0.981–1.018).
+    // Hodge (tests/test_member_contact.cpp measures 0.971–1.018). Under displacement control of
+    // the top the plates approach a little less where the yielded crown lifts off the plate
+    // (127.9 when the top has travelled 130, R/h 10 in fibres): 0.6 D is asked of them there.
     for (const bool hinges : {false, true})
         for (const double r_over_h : {10.0, 20.0, 40.0})
             for (const std::string scheme : {"load_control", "displacement_control", "arc_length"}) {
@@ -94,16 +96,18 @@ void append_crushing_cases(std::vector<StabilityCase>& cases) {
                 cases.push_back({hinges ? "steel ring crushed between plates, perfectly plastic hinges"
                                         : "steel ring crushed between plates, perfectly plastic fibres",
                                  r_over_h_label(r_over_h) + scheme_label(scheme), edited(ring, edits), done,
-                                 within_deruntz_hodge(355.0 * h * h / 4.0, 0.95, 1.05)});
+                                 within_deruntz_hodge(355.0 * h * h / 4.0, 0.95, 1.05, scheme == "displacement_control" ? 0.6 : 0.64)});
             }
-    // Perfectly plastic fibres, R/h 10 on 64 elements: the crown's wholly yielded element floats
-    // off the plate, and the step that stopped every scheme is taken with the members stiffened
-    // (engine/element/step_stiffening.hpp; tests/test_step_stiffening.cpp measures 0.997–1.011).
+    // Perfectly plastic fibres, R/h 10 on 64 elements, plates ten times as stiff as the scene's:
+    // the crown's wholly yielded element floats off the plate, and the step that stopped every
+    // scheme is taken with the members stiffened (engine/element/step_stiffening.hpp;
+    // tests/test_step_stiffening.cpp measures 0.997–1.011).
     // The crown stays off the plate: under displacement control of the top, the plates have
     // approached by 126 when the top has travelled 130, so 0.6 D is asked of them here.
     for (const std::string scheme : {"load_control", "displacement_control", "arc_length"}) {
         Edits edits = scheme_edits(scheme, "130.0");
-        edits.insert(edits.end(), {perfectly_plastic, {"h = 5.0", "h = 10.0"}, {"elements = 50", "elements = 64"}});
+        edits.insert(edits.end(), {perfectly_plastic, {"h = 5.0", "h = 10.0"}, {"elements = 50", "elements = 64"},
+                                   {"ky = \"350 MPa\"", "ky = \"3482 MPa\""}, {"ky = \"350 MPa\"", "ky = \"3482 MPa\""}});
         cases.push_back({"steel ring crushed between plates, perfectly plastic fibres, 64 elements", r_over_h_label(10.0) + scheme_label(scheme),
                          edited(ring, edits), done, within_deruntz_hodge(355.0 * 10.0 * 10.0 / 4.0, 0.95, 1.05, 0.6)});
     }
