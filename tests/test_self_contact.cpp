@@ -278,20 +278,21 @@ TEST_CASE("Surfaces touching along the members press with the penalty per unit l
 TEST_CASE("A ring crushed onto a steel bed with contact along the members spreads its flat more smoothly than node by node", "[contact][self_contact][crushing]") {
     // tests/contact/ring_on_bed.toml: the ring meets a deep steel member through self-contact.
     // The curve's largest deviation from the mean of its 9 neighbours (0.5 mm apart) past
-    // δ = 0.1 D: node by node the flat grows in steps (measured 1.05 %); with Gauss–Lobatto
-    // points along the members a third of an element at a time (0.61 %). The rest is the chords:
-    // the ring's wall is a polygon to the points, where the plates see its curved members.
+    // δ = 0.1 D: node by node the flat grows in steps (measured 0.75 %); with Gauss–Lobatto
+    // points along the members a third of an element at a time (0.16 %; 0.61 % with a penalty
+    // ten times as stiff, whose Winkler length is under an element: the points then feel the
+    // corners of the chords, the wall's polygon).
     const Model along = read_scene_text(scene_file_text("tests/contact/ring_on_bed.toml"), "ring_on_bed.toml");
     Model nodes = along;
     nodes.self_contact.front().along_members = false;
-    nodes.self_contact.front().stiffness = 3482.0 * M_PI * 100.0 / 50.0;
+    nodes.self_contact.front().stiffness = 350.0 * M_PI * 100.0 / 50.0;
     const Run smooth = run_model(along), stepped = run_model(std::move(nodes));
     REQUIRE(smooth.summary.status == RunStatus::completed);
     REQUIRE(stepped.summary.status == RunStatus::completed);
     const double along_roughness = crush_roughness(smooth, 20.0), node_roughness = crush_roughness(stepped, 20.0);
     CAPTURE(along_roughness, node_roughness);
-    CHECK(node_roughness > 0.01);
-    CHECK(along_roughness < 0.007);
+    CHECK(node_roughness > 0.005);
+    CHECK(along_roughness < 0.003);
     // The same ring either way: the loads at half the travel agree within the steps' height.
     CHECK(smooth.steps.back().load == Approx(stepped.steps.back().load).epsilon(0.01));
 }
