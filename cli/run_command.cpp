@@ -286,6 +286,10 @@ int run_command(const Args& args) {
         std::cerr << model.name << ": " << report.summary.reason << " after " << report.summary.steps
                   << " steps (" << report.summary.iterations << " iterations); peak load "
                   << report.peak_load << "; output in " << folder << "\n";
+    if (report.later_maximum)
+        std::cerr << "plastica: " << scene_file << ": note: past its first limit point the path reached a higher load, "
+                  << report.later_maximum->load << " at step " << report.later_maximum->step
+                  << ", on another branch: the peak reported is the first limit point's (run.json 'later_maximum')\n";
     if (report.summary.status == RunStatus::interrupted) return interrupted;
     // The converged steps are drawn even when the analysis stopped early.
 #ifdef PLASTICA_DRAWING

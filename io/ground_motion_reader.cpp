@@ -131,6 +131,14 @@ AccelerationRecord parse_acceleration_record(const std::string& text) {
 }
 
 void check_transient_step(TomlTableReader& r, const TransientSpec& t, const Model& model) {
+    // Without mass, M a = F − f has no answer: a run would stand still or never converge.
+    bool massive = false;
+    for (const ElementSpec& e : model.elements)
+        massive = massive || model.sections[static_cast<std::size_t>(e.section)].mass_per_length > 0.0;
+    for (const NodalMass& m : model.dynamics.masses) massive = massive || m.mass > 0.0 || m.rotational > 0.0;
+    if (!massive)
+        r.fail("scheme", "a transient stage needs mass, and the structure has none: give its [[material]] a 'density' "
+                         "(7850 kg/m3 for steel) or put a [[mass]] with 'm' at the nodes that move");
     // A record sampled every DT is followed at every point only if the step divides DT.
     for (const GroundMotionSpec& g : model.dynamics.ground_motions) {
         const double ratio = g.time_step / t.time_step;

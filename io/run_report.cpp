@@ -127,6 +127,10 @@ std::string to_json(const RunReport& r) {
         j["final"]["reactions"] = reactions;
     }
     j["peak"] = {{"load", r.peak_load}, {"control_displacement", r.peak_load_displacement}};
+    // Past the first limit point a higher load is another branch's, never the capacity.
+    if (r.later_maximum)
+        j["later_maximum"] = {{"load", r.later_maximum->load}, {"control_displacement", r.later_maximum->control_displacement},
+                              {"step", r.later_maximum->step}};
     if (!r.model->self_contact.empty()) {
         // The walls meet: what follows is the contact penalty's (the peak above is before it).
         Json contact = {{"closed", r.self_contact.first_step > 0}};
@@ -164,7 +168,9 @@ void RunReport::note(const StepResult& r) {
         for (const SurfaceContactResult& c : r.surface_contacts) force += std::hypot(c.force[0], c.force[1]);
         self_contact.last_force = model->report.load_scale * force;
     }
-    if (r.load > peak_load && self_contact.first_step == 0) {
+    if (r.past_first_limit && r.load > std::max(peak_load, later_maximum ? later_maximum->load : peak_load)) {
+        later_maximum = LaterMaximum{r.step, r.load, r.control_displacement};
+    } else if (!r.past_first_limit && r.load > peak_load && self_contact.first_step == 0) {
         peak_load = r.load;
         peak_load_displacement = r.control_displacement;
     }

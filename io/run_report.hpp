@@ -41,8 +41,15 @@ struct RunReport {
     RunSummary summary;
     std::vector<std::pair<std::string, double>> stage_seconds;
     FinalState last;        // of the last converged step
-    double peak_load = 0.0; // largest reported load (before self-contact closed, where the scene has it)
+    // The largest reported load up to the path's first limit point (before self-contact
+    // closed, where the scene has it); a higher one met past that point is the later maximum.
+    double peak_load = 0.0;
     double peak_load_displacement = 0.0;
+    struct LaterMaximum {
+        int step = 0;
+        double load = 0.0, control_displacement = 0.0;
+    };
+    std::optional<LaterMaximum> later_maximum;
     std::vector<std::optional<double>> load_at; // at ReportSpec::load_at, where reached
     SelfContactMarks self_contact;
     std::vector<std::string> drawing_notes; // drawing options that could not act, and why

@@ -26,6 +26,33 @@ double section_depth(const SectionSpec& s) {
     return s.area > 0.0 ? std::sqrt(12.0 * s.inertia / s.area) : 0.0;
 }
 
+// A load in time on a node without mass moves it only as far as statics does: where that is
+// meant (a massless bar to a tip mass) it is right, where the density was forgotten it is not.
+void massless_load_warnings(const Model& model, std::vector<std::string>& warnings) {
+    std::vector<double> translational(model.nodes.size(), 0.0), rotational(model.nodes.size(), 0.0);
+    for (const ElementSpec& e : model.elements) {
+        const SectionSpec& s = model.sections[static_cast<std::size_t>(e.section)];
+        for (int n : {e.node_i, e.node_j}) {
+            translational[static_cast<std::size_t>(n)] += s.mass_per_length;
+            rotational[static_cast<std::size_t>(n)] += s.rotary_inertia_per_length;
+        }
+    }
+    for (const NodalMass& m : model.dynamics.masses) {
+        translational[static_cast<std::size_t>(m.node)] += m.mass;
+        rotational[static_cast<std::size_t>(m.node)] += m.rotational;
+    }
+    for (const NodalLoad& l : model.loads) {
+        const std::size_t n = static_cast<std::size_t>(l.node);
+        const bool pushed = (l.value[0] != 0.0 || l.value[1] != 0.0) && translational[n] == 0.0;
+        const bool turned = l.value[2] != 0.0 && rotational[n] == 0.0;
+        if (!pushed && !turned) continue;
+        const Node& p = model.nodes[n];
+        warnings.push_back("the load at (" + warning_number(p.x) + ", " + warning_number(p.y) + ") acts on a node without " +
+                           (pushed ? "mass" : "rotational inertia") +
+                           ": in time it moves there as statics says; give the members a density or the node a [[mass]] if it should not");
+    }
+}
+
 } // namespace
 
 std::vector<std::string> scene_warnings(const Model& model) {
@@ -67,6 +94,7 @@ std::vector<std::string> scene_warnings(const Model& model) {
         warnings.push_back("a foundation spring of stiffness " + warning_number(spring) + " is " + warning_number(spring / stiffest) +
                            " times the stiffest element's EA/L (" + warning_number(stiffest) +
                            "): its round-off may stop the run; a penalty of 1e2 to 1e4 times that holds as well");
+    if (model.transient()) massless_load_warnings(model, warnings);
     return warnings;
 }
 

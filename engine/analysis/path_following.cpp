@@ -127,11 +127,12 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
     initial_flexibility_ = load_flexibility();
     // A scene in motion from the start: step 0 is its state at t = 0, velocities and energies too.
     const bool starts_in_time = stepper_ && model_.analysis.scheme == Scheme::transient;
-    if (starts_in_time) stepper_->begin_stage(model_.analysis.transient, u_, lambda_, solver_);
+    if (starts_in_time) stepper_->begin_stage(model_.analysis.transient, u_, lambda_);
     make_result(0, 0, Acceptance::none, control.report_sections);
     if (starts_in_time) stepper_->fill(u_, result_);
     if (!publish(result_)) return finish(0);
     path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
+    watch_stage();
 
     // The current stage's settings (the sequence updates them in place at each new stage).
     const AnalysisSpec& stage = stages_.current();
@@ -240,6 +241,8 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         if (result.negative_pivots > 0) {
             if (summary.negative_pivot_steps++ == 0) summary.first_negative_pivot_step = step_;
         }
+        watch_.note(step_, lambda_);
+        result.past_first_limit = watch_.past_first_limit();
         if (!publish(result)) return finish(step_ - 1);
         if (!crossing.empty()) {
             stop({RunStatus::penetration, crossing});
@@ -264,41 +267,6 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
         }
     }
     return finish(step_);
-}
-
-void PathFollowing::commit_step(const NewtonResult& outcome, RunSummary& summary) {
-    if (outcome.tolerance > summary.largest_residual_tolerance) {
-        summary.largest_residual_tolerance = outcome.tolerance;
-        summary.largest_tolerance_step = step_ + 1;
-    }
-    system_.commit();
-    if (stiffened_step_) {
-        ++summary.stiffened_steps;
-        stiffened_step_ = false;
-        system_.stiffen_capacity(0.0);
-    }
-    committed_contact_ = touching_bases(system_);
-    failures_in_step_ = 0;
-    steps_missing_arc_ = missed_arc_in_step_ ? steps_missing_arc_ + 1 : 0;
-    missed_arc_in_step_ = false;
-    peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
-    ++step_;
-    arc_length_ += previous_increment_.norm();
-    path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
-}
-
-double PathFollowing::begin_next_stage() {
-    const StageSpec& s = stages_.next();
-    drive_pattern(s.pattern);
-    const double h = stages_.begin_next(lambda_, u_);
-    constraint_ = make_path_constraint(s.scheme);
-    control_equation_ = system_.equation(dofs_per_node * s.control.node + s.control.dof);
-    // A stage that turns back starts from an elastic predictor: continued loading there may be
-    // a mechanism's tangent, which throws the first iterate far off.
-    if (stages_.turned_back()) system_.predict_unloading();
-    path_.clear();
-    path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
-    return h;
 }
 
 } // namespace plastica

@@ -8,6 +8,7 @@
 #include "analysis/path_constraint.hpp"
 #include "analysis/linear_buckling.hpp"
 #include "analysis/path_extrapolation.hpp"
+#include "analysis/path_watch.hpp"
 #include "analysis/stage_sequence.hpp"
 #include "analysis/step_controller.hpp"
 #include "analysis/step_result.hpp"
@@ -109,6 +110,9 @@ private:
     std::optional<StopReason> limit_on_plateau(double step_h);
     // The next stage drives its pattern under its constraint; returns its first increment.
     double begin_next_stage();
+    // The path watch starts on the current stage (analysis/path_watch.hpp).
+    void watch_stage();
+    PathWatch watch_;
     // A transient stage, from its start to its duration (analysis/transient_stage.cpp): each
     // step is published; a step that fails is cut and retaken. Returns the stop if it ends the
     // run early; publish is run_steps' own. begun: the stepper has begun it (at step 0).

@@ -73,4 +73,47 @@ std::string PathFollowing::check_penetration() const {
     return "step " + std::to_string(step_) + ": " + found;
 }
 
+void PathFollowing::commit_step(const NewtonResult& outcome, RunSummary& summary) {
+    if (outcome.tolerance > summary.largest_residual_tolerance) {
+        summary.largest_residual_tolerance = outcome.tolerance;
+        summary.largest_tolerance_step = step_ + 1;
+    }
+    system_.commit();
+    if (stiffened_step_) {
+        ++summary.stiffened_steps;
+        stiffened_step_ = false;
+        system_.stiffen_capacity(0.0);
+    }
+    committed_contact_ = touching_bases(system_);
+    failures_in_step_ = 0;
+    steps_missing_arc_ = missed_arc_in_step_ ? steps_missing_arc_ + 1 : 0;
+    missed_arc_in_step_ = false;
+    peak_lambda_ = std::max(peak_lambda_, std::abs(lambda_));
+    ++step_;
+    arc_length_ += previous_increment_.norm();
+    path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
+}
+
+double PathFollowing::begin_next_stage() {
+    const StageSpec& s = stages_.next();
+    drive_pattern(s.pattern);
+    const double h = stages_.begin_next(lambda_, u_);
+    constraint_ = make_path_constraint(s.scheme);
+    control_equation_ = system_.equation(dofs_per_node * s.control.node + s.control.dof);
+    // A stage that turns back starts from an elastic predictor: continued loading there may be
+    // a mechanism's tangent, which throws the first iterate far off.
+    if (stages_.turned_back()) system_.predict_unloading();
+    path_.clear();
+    path_.add(path_parameter(), system_.gather(u_), lambda_, system_.axial_forces());
+    watch_stage();
+    return h;
+}
+
+void PathFollowing::watch_stage() {
+    // λ is a load where the driven pattern has forces (not a plate's travel alone); a stage that
+    // unloads falls by design.
+    const bool watched = stages_.current().scheme != Scheme::transient && model_.has_forces(factors_.driven) && !stages_.turned_back();
+    watch_.begin_stage(watched, lambda_ < 0.0 ? -1.0 : 1.0, lambda_);
+}
+
 } // namespace plastica

@@ -99,6 +99,9 @@ struct StepResult {
     EnergyTerms energy;
     // The critical point passed in this step, if any.
     std::optional<CriticalPoint> critical;
+    // The path has passed its first limit point (analysis/path_watch.hpp): a higher load from
+    // here on is not the structure's capacity.
+    bool past_first_limit = false;
 };
 
 // output_failed: an observer could not take a step (a full disk); the steps before it stand.

@@ -75,7 +75,7 @@ double PathFollowing::advance_in_time(double dt, const RunControl& control, RunS
 std::optional<StopReason> PathFollowing::run_transient_stage(const std::function<bool(const StepResult&)>& publish,
                                                              const RunControl& control, RunSummary& summary, bool begun) {
     const TransientSpec spec = stages_.current().transient;
-    if (!begun) stepper_->begin_stage(spec, u_, lambda_, solver_);
+    if (!begun) stepper_->begin_stage(spec, u_, lambda_);
     const double end = stepper_->time() + spec.duration;
     double dt = spec.time_step;
     while (stepper_->time() < end - 1e-9 * spec.time_step) {

@@ -1,6 +1,7 @@
 #include "dynamics/time_stepper.hpp"
 
 #include "dynamics/excitation.hpp"
+#include "dynamics/initial_acceleration.hpp"
 #include "dynamics/modal_analysis.hpp"
 
 #include <algorithm>
@@ -58,7 +59,7 @@ void TimeStepper::set_damping(const TransientSpec&, const Eigen::VectorXd& u) {
     }
 }
 
-void TimeStepper::begin_stage(const TransientSpec& spec, const Eigen::VectorXd& u, double load_factor, LinearSolver& solver) {
+void TimeStepper::begin_stage(const TransientSpec& spec, const Eigen::VectorXd& u, double load_factor) {
     spec_ = spec;
     stage_start_ = time_;
     const Eigen::VectorXd no_prescribed = Eigen::VectorXd::Zero(u.size());
@@ -89,10 +90,9 @@ void TimeStepper::begin_stage(const TransientSpec& spec, const Eigen::VectorXd& 
     if (damping_.alpha_m != 0.0) s.damping += damping_.alpha_m * (M * s.v);
     const SparseMatrix& K = model_.dynamics.damping.stiffness == DampingSpec::Stiffness::initial ? initial_tangent_ : system_.tangent();
     if (damping_.beta_k != 0.0 && K.rows() == s.v.size()) s.damping += damping_.beta_k * (K * s.v);
-    // The acceleration in equilibrium at the start; where DOFs carry no mass, none.
-    s.a = Eigen::VectorXd::Zero(s.x.size());
-    if (s.x.size() > 0 && solver.factorize(M)) s.a = solver.solve(s.external - s.internal - s.damping);
-    if (!s.a.allFinite()) s.a.setZero();
+    // The acceleration in equilibrium at the start, the ground's included; DOFs without mass
+    // follow the massed ones (dynamics/initial_acceleration.hpp).
+    s.a = initial_acceleration(M, system_.tangent(), s.external - s.internal - s.damping);
     if (!started_) {
         kinetic_start_ = kinetic_energy(u);
         strain_start_ = strain_energy();

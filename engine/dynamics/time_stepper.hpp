@@ -31,7 +31,7 @@ public:
     // A transient stage begins from u at the current time: at rest (or with the scene's initial
     // velocities, at the first), its acceleration in equilibrium with the loads at λ. The
     // damping's coefficients are found here (from the modes of this state, for a ratio).
-    void begin_stage(const TransientSpec& spec, const Eigen::VectorXd& u, double load_factor, LinearSolver& solver);
+    void begin_stage(const TransientSpec& spec, const Eigen::VectorXd& u, double load_factor);
     // One step of dt; u is moved, and on failure is the caller's to restore.
     NewtonResult step(double dt, Eigen::VectorXd& u, double load_factor, const NewtonSettings& settings,
                       const FreezeAfter& freeze, LinearSolver& solver, const IterationHook& hook);

@@ -1,0 +1,122 @@
+// A followed path is the structure's, or the run stops and says why: the peak is the first
+// limit point, never a higher load met on another branch, and an arc that turns back stops.
+#include "analysis/path_watch.hpp"
+#include "analysis_helpers.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace plastica;
+using plastica::testing::Run;
+using plastica::testing::run_scene;
+
+namespace {
+
+// A pinned 12 m HEB 300 column in S355 with refined hinges on 12 elements, bowed L/1000 in its
+// first mode, pressed at its top and reported at mid-height along x.
+std::string hinged_column(const std::string& analysis) {
+    return R"(
+[scene]
+name = "column"
+[units]
+length = "m"
+force = "kN"
+[[material]]
+name = "S355"
+E = 2.1e8
+fy = 3.55e5
+[[section]]
+name = "HEB300"
+material = "S355"
+profile = "HEB 300"
+plasticity = "hinges"
+[[line]]
+start = [0.0, 0.0]
+end = [0.0, 12.0]
+elements = 12
+section = "HEB300"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy"]
+[[support]]
+at = [0.0, 12.0]
+fix = ["ux"]
+[[load]]
+at = [0.0, 12.0]
+fy = -1.0
+[[imperfection]]
+mode = 1
+amplitude = 0.012
+[analysis]
+control_at = [0.0, 6.0]
+control_dof = "ux"
+max_steps = 2000
+)" + analysis;
+}
+
+// The largest load before the path passed its first limit point.
+double peak_of(const Run& p) {
+    double peak = 0.0;
+    for (const StepResult& r : p.steps)
+        if (!r.past_first_limit) peak = std::max(peak, r.load);
+    return peak;
+}
+
+} // namespace
+
+TEST_CASE("An arc-length column reports its first limit point as its peak, not the higher load it meets folded") {
+    // Displacement control in steps of 2 mm resolves the peak to 1e-4 (its curvature over one
+    // step): the reference.
+    const Run reference = run_scene(hinged_column("scheme = \"displacement_control\"\nincrement = 0.002\ntarget_displacement = 0.3\n"));
+    REQUIRE(reference.summary.status == RunStatus::completed);
+    const double capacity = peak_of(reference);
+    for (const double increment : {0.05, 0.2, 0.5}) {
+        CAPTURE(increment);
+        const Run arc = run_scene(hinged_column("scheme = \"arc_length\"\nincrement = " + std::to_string(increment) +
+                                              "\ntarget_displacement = 8.0\n"));
+        // The steps near the peak are the arc's own (0.2 m of the column's motion for the middle
+        // one): within 1 % of the peak's load.
+        CHECK(peak_of(arc) == Approx(capacity).epsilon(0.01));
+        // Folded as far as its halves allow (5.9 m at mid-height), the column folds on below its
+        // base pin and its load rises far above the capacity: those steps are marked.
+        bool above = false;
+        for (const StepResult& r : arc.steps) {
+            if (r.load > 1.05 * capacity) CHECK(r.past_first_limit);
+            above = above || r.load > 1.05 * capacity;
+        }
+        if (increment == 0.2) CHECK(above);
+    }
+}
+
+TEST_CASE("The path watch finds the first limit point, not a sawtooth, and keeps it past a higher load") {
+    SECTION("a sawtooth of 3 % is no limit point") {
+        PathWatch w;
+        w.begin_stage(true, 1.0, 0.0);
+        for (int k = 1; k <= 20; ++k) w.note(k, k % 2 ? 1.0 * k : 0.97 * k);
+        CHECK(!w.past_first_limit());
+    }
+    SECTION("a snap-through's limit stays the first one when the load later rises higher") {
+        PathWatch w;
+        w.begin_stage(true, 1.0, 0.0);
+        const double lambda[] = {0.5, 1.0, 1.8, 1.75, 1.0, -0.5, 0.2, 1.0, 2.5, 4.0};
+        for (int k = 0; k < 10; ++k) w.note(k + 1, lambda[k]);
+        CHECK(w.past_first_limit());
+        CHECK(w.limit_step() == 3);
+        CHECK(w.limit_load_factor() == 1.8);
+    }
+    SECTION("a stage that unloads by design is not watched; one loaded the other way is") {
+        PathWatch w;
+        w.begin_stage(false, 1.0, 2.0);
+        for (int k = 1; k <= 5; ++k) w.note(k, 2.0 - 0.4 * k);
+        CHECK(!w.past_first_limit());
+        w.begin_stage(true, -1.0, 0.0);
+        w.note(6, -1.0);
+        w.note(7, -2.0);
+        w.note(8, -1.5);
+        CHECK(w.past_first_limit());
+        CHECK(w.limit_load_factor() == -2.0);
+    }
+}
