@@ -17,8 +17,7 @@ scene_file() { echo "${PLASTICA_MODELS:-$here/models}/$1.toml"; }
 "$plastica" run "$(scene_file ring_inelastic)" -o "$dir/runs/ring_inelastic" --no-render --force -q
 "$plastica" render "$dir/runs/ring_elastic" -o "$dir/ring_elastic" --size 640x360 --steps $steps_elastic --no-animation -q "$@"
 "$plastica" render "$dir/runs/ring_inelastic" -o "$dir/ring_inelastic" --size 640x360 --steps $steps_inelastic --no-animation -q "$@"
-# PLASTICA_SNAPSHOT_RINGS_ONLY=1 leaves the gallery out (the sanitized suite).
-[ -n "${PLASTICA_SNAPSHOT_RINGS_ONLY:-}" ] || for scene in "$here"/models/gallery/*.toml; do
+for scene in "$here"/models/gallery/*.toml; do
     name=$(basename "$scene" .toml)
     "$plastica" run "$scene" -o "$dir/runs/$name" --no-render --force -q
     # --every larger than any run: the first and the last step, and the first yield and the peak.

@@ -28,13 +28,6 @@ case $4 in
     *) echo "unknown case $4"; exit 2 ;;
 esac
 status=0
-if [ -n "${PLASTICA_SNAPSHOT_RINGS_ONLY:-}" ]; then
-    for ring in ring_elastic ring_inelastic; do
-        [ "$status" -eq 0 ] || break
-        "$plastica" compare "$work/pictures/$ring" "$source/tests/snapshots/$ring" --region "$region" --diff "$work/diff/$ring" || status=$?
-    done
-else
-    "$plastica" compare "$work/pictures" "$source/tests/snapshots" --region "$region" --diff "$work/diff" || status=$?
-fi
+"$plastica" compare "$work/pictures" "$source/tests/snapshots" --region "$region" --diff "$work/diff" || status=$?
 echo "compare exited with $status, expected $expected"
 test "$status" -eq "$expected"

@@ -57,6 +57,28 @@ SparseMatrix PathFollowing::tangent_at(const Eigen::VectorXd& u, double lambda) 
     return K;
 }
 
+bool PathFollowing::left_the_path(const Eigen::VectorXd& u_saved, double lambda_saved) {
+    // The path's tangent where the step started, K₀⁻¹f: a step along the path turns from it by
+    // its curvature over one step, a few degrees; one that ran onto another branch moves along
+    // that branch's mode, orthogonal to it. Past a stable symmetric bifurcation the buckled
+    // branch is stable, so the pivots at both ends agree and only the direction tells.
+    const Eigen::VectorXd du = system_.gather(u_ - u_saved);
+    const double length = du.norm();
+    if (!(length > 0.0)) return false;
+    const SparseMatrix K0 = tangent_at(u_saved, lambda_saved);
+    if (!check_solver_.factorize(K0)) return false;
+    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+    const Eigen::VectorXd t = check_solver_.solve(f);
+    const double t_norm = t.norm();
+    if (!(t_norm > 0.0) || !t.allFinite()) return false;
+    // Under load control the tangent's sense is the load's: a step against it went over to
+    // another branch as well (an imperfect column's complementary one, its bow reversed).
+    const double along = du.dot(t) / t_norm;
+    const double dlambda = lambda_ - lambda_saved;
+    if (constraint_->prescribes_load_factor() && dlambda != 0.0) return (dlambda > 0.0 ? along : -along) < branch_alignment * length;
+    return std::abs(along) < branch_alignment * length;
+}
+
 bool PathFollowing::cut_for_pivots(double step_h) {
     const AnalysisSpec& stage = stages_.current();
     const int passed = solver_.negative_pivots() - committed_pivots_;
@@ -139,7 +161,10 @@ CriticalPoint PathFollowing::locate_critical_point(const Eigen::VectorXd& u_save
         // With "switch" the branch is taken from the interpolated bifurcation itself: a path led
         // up to it in small steps would follow a slight imperfection's side instead.
         const bool switching = stages_.current().bifurcation == BifurcationRule::switch_branch && !branch_switched_;
-        if (landing_left && share && !switching && std::abs(lambda_past - lambda_saved) > landing_band * std::abs(found.load_factor))
+        // A step that starts within the band of it has landed already: taken again, it would
+        // publish the same load factor once more.
+        const bool landed = std::abs(found.load_factor - lambda_saved) <= landing_band * std::abs(found.load_factor);
+        if (landing_left && share && !switching && !landed && std::abs(lambda_past - lambda_saved) > landing_band * std::abs(found.load_factor))
             land_at = std::clamp(*share, 0.05, 0.95);
     } else {
         // The load's maximum: the quadratic through the last two states and this one, else the

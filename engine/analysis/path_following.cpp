@@ -195,7 +195,19 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             h = 0.5 * step_h;
             continue;
         }
+        // A bifurcation jumped onto a stable branch shows no pivot: the step is cut until it
+        // stays on its path (and passes the pivot) or can be cut no more.
+        // One that cannot be cut further is published as passing it, onto the branch it took.
+        const bool jumped = tracks_critical_points && outcome.iterations >= branch_check_iterations && left_the_path(u_saved, lambda_saved);
+        if (jumped && branch_cuts_in_step_ < most_branch_cuts && std::abs(0.5 * step_h) >= stage.min_increment) {
+            roll_back(u_saved, lambda_saved);
+            ++branch_cuts_in_step_;
+            ++summary.cut_steps;
+            h = 0.5 * step_h;
+            continue;
+        }
         std::optional<CriticalPoint> critical;
+        if (jumped) critical = CriticalPoint{CriticalKind::bifurcation, step_ + 1, lambda_saved, 0.0, 0.0, {}, true};
         if (tracks_critical_points && solver_.negative_pivots() > committed_pivots_) {
             std::optional<double> land_at;
             critical = locate_critical_point(u_saved, lambda_saved, land_at);
@@ -214,6 +226,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             landings_ = 0;
         }
         pivot_cuts_in_step_ = 0;
+        branch_cuts_in_step_ = 0;
         NewtonResult taken = outcome;
         if (critical && critical->kind == CriticalKind::bifurcation && stage.bifurcation == BifurcationRule::switch_branch &&
             !branch_switched_ && !critical->mode.empty()) {

@@ -126,6 +126,16 @@ private:
     // Critical points (analysis/path_critical.cpp). A converged step that turns more than one
     // pivot negative is cut (at most ten times) so that they are met one at a time.
     bool cut_for_pivots(double step_h);
+    // A converged step that left the path it started on (a bifurcation jumped onto its stable
+    // buckled branch, which no pivot shows): its increment turns more than 45° from the path's
+    // tangent at its start (cosine below branch_alignment). Checked on steps that took
+    // branch_check_iterations or more, as a jump does: a step along the path takes one or two.
+    bool left_the_path(const Eigen::VectorXd& u_saved, double lambda_saved);
+    static constexpr double branch_alignment = 0.7071;
+    static constexpr int branch_check_iterations = 5;
+    static constexpr int most_branch_cuts = 12;
+    LinearSolver check_solver_; // the start's tangent, beside the step's own factorisation
+    int branch_cuts_in_step_ = 0;
     // The tangent at another state (u, λ), the system left as it was.
     SparseMatrix tangent_at(const Eigen::VectorXd& u, double lambda);
     // The critical point a converged step passed (one more negative pivot than the state it
