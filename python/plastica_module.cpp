@@ -22,6 +22,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -35,6 +36,39 @@ namespace py = pybind11;
 using namespace plastica;
 
 namespace {
+
+// Ctrl-C during a run: Python's own handler would only mark the signal for the main thread,
+// which waits in the run without the GIL. Plastica's stops the run between two Newton
+// iterations; KeyboardInterrupt is raised once the run has returned.
+std::atomic<bool>* interrupting_run = nullptr;
+std::atomic<bool> interrupted_by_signal{false};
+extern "C" void interrupt_run(int) {
+    interrupted_by_signal = true;
+    if (interrupting_run) *interrupting_run = true;
+}
+
+// Installs interrupt_run for SIGINT while it lives and puts Python's handler back after.
+class InterruptibleRun {
+public:
+    explicit InterruptibleRun(std::atomic<bool>& stop) {
+        interrupted_by_signal = false;
+        interrupting_run = &stop;
+        struct sigaction action {};
+        action.sa_handler = interrupt_run;
+        sigemptyset(&action.sa_mask);
+        installed_ = sigaction(SIGINT, &action, &previous_) == 0;
+    }
+    ~InterruptibleRun() {
+        if (installed_) sigaction(SIGINT, &previous_, nullptr);
+        interrupting_run = nullptr;
+    }
+    InterruptibleRun(const InterruptibleRun&) = delete;
+    InterruptibleRun& operator=(const InterruptibleRun&) = delete;
+
+private:
+    struct sigaction previous_ {};
+    bool installed_ = false;
+};
 
 // One run: the model, its summary, every converged step, and the texts the CLI would write.
 struct Run {
@@ -104,16 +138,24 @@ std::shared_ptr<Run> run_scene(const std::string& source, bool is_text, const st
         };
         RunControl control;
         control.interrupt = &stop;
-        report.summary = analysis.run({[&](const StepResult& r) {
-            show(r, false);
-            run->curve_csv += curve_row(run->model, r);
-            report.note(r);
-            run->steps.push_back(r);
-        }}, control);
+        {
+            const InterruptibleRun interruptible(stop);
+            report.summary = analysis.run({[&](const StepResult& r) {
+                show(r, false);
+                run->curve_csv += curve_row(run->model, r);
+                report.note(r);
+                run->steps.push_back(r);
+            }}, control);
+        }
         if (!run->steps.empty()) show(run->steps.back(), true);
         if (raised) {
             py::gil_scoped_acquire locked;
             throw std::move(*raised);
+        }
+        if (interrupted_by_signal) {
+            py::gil_scoped_acquire locked;
+            PyErr_SetNone(PyExc_KeyboardInterrupt);
+            throw py::error_already_set();
         }
         report.stage_seconds = {{"read", read_seconds}, {"analysis", seconds_since(t1)}};
         run->summary = report.summary;

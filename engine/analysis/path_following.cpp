@@ -73,6 +73,15 @@ RunSummary PathFollowing::run(const std::vector<StepObserver>& observers, const 
         summary.reason = std::string("the damping's modes: ") + e.what();
         summary.steps = step_;
         return summary;
+    } catch (const RunInterrupted&) {
+        u_ = u_published_;
+        lambda_ = lambda_published_;
+        system_.revert();
+        summary.status = RunStatus::interrupted;
+        summary.reason = "interrupted";
+        summary.steps = step_;
+        if (stepper_) summary.time = stepper_->time();
+        return summary;
     } catch (const std::bad_alloc&) {
         summary.status = RunStatus::out_of_memory;
         std::ostringstream why;

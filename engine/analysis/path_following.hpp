@@ -55,6 +55,10 @@ struct RunControl {
     bool report_sections = true;
 };
 
+// Thrown between Newton iterations once RunControl::interrupt is set: the run goes back to its
+// last published state and stops as interrupted (a long step does not delay a signal).
+struct RunInterrupted {};
+
 // Per-iteration record for solver diagnostics (quadratic convergence checks).
 struct IterationTrace {
     int step = 0;
@@ -219,6 +223,8 @@ private:
     std::vector<IterationTrace> trace_;
     PathExtrapolation path_; // the last converged states, for the predictor
     StepResult result_;      // the step being published (make_result)
+    Eigen::VectorXd u_published_; // the state of the last published step, where an interrupt returns
+    double lambda_published_ = 0.0;
 };
 
 } // namespace plastica

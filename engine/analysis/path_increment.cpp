@@ -41,6 +41,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     const IterationHook hook = [&](int iteration, double relative) {
         trace_.push_back({step, iteration, relative});
         last_residual_ = relative;
+        if (control.interrupt && control.interrupt->load()) throw RunInterrupted{};
     };
     IncrementGuess guess;
     const IncrementGuess* start = nullptr;

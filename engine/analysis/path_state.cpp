@@ -36,6 +36,8 @@ void PathFollowing::drive_pattern(int pattern) {
 
 StepResult& PathFollowing::make_result(int step, int iterations, Acceptance rule, bool with_sections) {
     StepResult& r = result_;
+    u_published_ = u_;
+    lambda_published_ = lambda_;
     r.step = step;
     r.load_factor = lambda_;
     r.stage = stages_.number();

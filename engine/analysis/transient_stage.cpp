@@ -58,6 +58,7 @@ double PathFollowing::advance_in_time(double dt, const RunControl& control, RunS
         const IterationHook hook = [&](int iteration, double relative) {
             trace_.push_back({step, iteration, relative});
             last_residual_ = relative;
+            if (control.interrupt && control.interrupt->load()) throw RunInterrupted{};
         };
         outcome = stepper_->step(dt, u_, lambda_, settings, freeze, solver_, hook);
         if (outcome.converged()) return dt;

@@ -32,3 +32,66 @@ def test_a_run_in_time_reports_time_and_balanced_energy(source):
     assert np.all(np.diff(curve["time"]) > 0)
     assert max(curve["energy_error"]) < 1e-4
     assert curve["plastic_dissipation"][-1] > 0.3 * curve["kinetic_energy"][0]
+
+
+LONG_SDOF = """
+[scene]
+name = "sdof"
+[[material]]
+name = "m"
+E = 100.0
+[[section]]
+name = "s"
+material = "m"
+A = 1.0
+I = 1.0
+[[line]]
+start = [0.0, 0.0]
+end = [1.0, 0.0]
+elements = 1
+section = "s"
+[[support]]
+at = [0.0, 0.0]
+fix = ["ux", "uy", "rz"]
+[[support]]
+at = [1.0, 0.0]
+fix = ["uy", "rz"]
+[[mass]]
+at = [1.0, 0.0]
+m = 1.0
+[[initial_velocity]]
+at = [1.0, 0.0]
+v = [0.01, 0.0]
+[analysis]
+scheme = "transient"
+time_step = 0.001
+duration = 5000.0
+control_at = [1.0, 0.0]
+control_dof = "ux"
+"""
+
+
+def test_ctrl_c_stops_a_long_run_within_a_second_as_keyboard_interrupt(tmp_path):
+    # Five million steps (minutes): SIGINT half a second in must end the run between two
+    # iterations and reach Python as KeyboardInterrupt.
+    script = tmp_path / "long.py"
+    script.write_text(
+        "import time, plastica\n"
+        f"scene = {LONG_SDOF!r}\n"
+        "start = time.monotonic()\n"
+        "try:\n"
+        "    plastica.run(scene)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted after', time.monotonic() - start)\n"
+    )
+    import signal
+    import sys
+    import time
+
+    process = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True)
+    time.sleep(1.5)
+    sent = time.monotonic()
+    process.send_signal(signal.SIGINT)
+    out, _ = process.communicate(timeout=30)
+    assert time.monotonic() - sent < 1.0
+    assert "interrupted after" in out
