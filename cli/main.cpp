@@ -4,6 +4,9 @@
 #include "drawing_program.hpp"
 
 #include <cstring>
+#include <exception>
+#include <new>
+#include <string>
 #include <malloc.h>
 #include <iostream>
 #include <map>
@@ -66,5 +69,15 @@ int main(int argc, char** argv) {
         std::cerr << "plastica: unknown command '" << argv[1] << "'\n" << usage;
         return bad_input;
     }
-    return command->second(Args(argv + 2, argv + argc));
+    // Each command turns the errors it knows into located messages; whatever else escapes
+    // (a library's own exception) still ends with a message and an exit code, never an abort.
+    try {
+        return command->second(Args(argv + 2, argv + argc));
+    } catch (const std::bad_alloc&) {
+        std::cerr << "plastica " << argv[1] << (argc > 2 ? std::string(" ") + argv[2] : std::string()) << ": out of memory\n";
+        return stopped_early;
+    } catch (const std::exception& e) {
+        std::cerr << "plastica " << argv[1] << (argc > 2 ? std::string(" ") + argv[2] : std::string()) << ": " << e.what() << "\n";
+        return bad_input;
+    }
 }

@@ -112,12 +112,19 @@ AccelerationRecord parse_acceleration_record(const std::string& text) {
         static const std::regex dt(R"(DT\s*=\s*([0-9.eE+-]+))", std::regex::icase);
         std::smatch m;
         std::vector<double> two;
-        if (std::regex_search(header, m, npts)) expected = std::stoi(m[1].str());
+        // The count as a double, checked before it becomes an int: a header may claim any number
+        // of digits, and a record file of at most scene_file_limit bytes holds fewer values.
+        double count = -1.0;
+        if (std::regex_search(header, m, npts)) count = std::strtod(m[1].str().c_str(), nullptr);
         if (std::regex_search(header, m, dt)) record.time_step = std::strtod(m[1].str().c_str(), nullptr);
-        if ((expected < 0 || record.time_step <= 0.0) && numbers_in(header.substr(0, header.find_first_of("aAbBcCdDfFgGhHiIjJkKlLmMnNoOpPqQrRsStTuUvVwWxXyYzZ")), two) && two.size() >= 2) {
-            expected = static_cast<int>(two[0]);
+        if ((count < 0.0 || record.time_step <= 0.0) && numbers_in(header.substr(0, header.find_first_of("aAbBcCdDfFgGhHiIjJkKlLmMnNoOpPqQrRsStTuUvVwWxXyYzZ")), two) && two.size() >= 2) {
+            count = two[0];
             record.time_step = two[1];
         }
+        if (count > static_cast<double>(scene_file_limit) || (count >= 0.0 && count != std::floor(count)))
+            throw std::runtime_error("line 4 announces NPTS = " + (std::ostringstream() << count).str() +
+                                     ", not a count of values a record file can hold (at most " + std::to_string(scene_file_limit / 2) + ")");
+        if (count >= 0.0) expected = static_cast<int>(count);
         if (expected < 0 || !(record.time_step > 0.0) || !std::isfinite(record.time_step))
             throw std::runtime_error("line 4 gives no 'NPTS= n, DT= dt' (a PEER AT2 header)");
         from = 4;

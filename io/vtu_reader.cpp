@@ -71,6 +71,7 @@ public:
     XmlDataset read() {
         XmlDataset data;
         std::string section;
+        Tag piece;
         for (std::size_t at = header_.find('<'); at != std::string::npos; at = header_.find('<', at + 1)) {
             const std::size_t end = header_.find('>', at);
             if (end == std::string::npos) fail("a tag is not closed");
@@ -83,7 +84,16 @@ public:
                 if (section == "PointData") data.active_vectors = attribute(tag, "Vectors").value_or("");
             } else if (tag.element == "DataArray" || tag.element == "Array") {
                 array(tag, section, data);
+            } else if (tag.element == "Piece") {
+                piece = tag;
             }
+        }
+        // VTK's reader allocates what the piece claims before it reads a value (1e12 points:
+        // std::bad_alloc): the claim must be what the arrays hold.
+        for (const auto& [key, held] : {std::pair<const char*, std::size_t>{"NumberOfPoints", data.point_count()},
+                                        std::pair<const char*, std::size_t>{"NumberOfCells", data.lines.size()}}) {
+            const std::string claimed = attribute(piece, key).value_or("");
+            if (claimed != std::to_string(held)) fail(std::string("the piece's ") + key + " is '" + claimed + "', its arrays hold " + std::to_string(held));
         }
         if (data.points.empty() && !data.lines.empty()) fail("cells without points");
         for (const auto& line : data.lines)

@@ -3,6 +3,7 @@
 #include "bounded_file.hpp"
 #include "safe_names.hpp"
 #include "toml_table_reader.hpp"
+#include "vtu_reader.hpp"
 #include "render_error.hpp"
 
 #include <vtkAbstractArray.h>
@@ -154,6 +155,13 @@ ResultSeries open_series(const std::string& folder_or_pvd) {
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> read_step(const std::string& file) {
+    // VTK's reader trusts the sizes the appended data's headers claim (2⁶³ bytes: a crash inside
+    // it): Plastica's own reader checks every offset and size against the file first.
+    try {
+        (void)parse_unstructured_grid(read_bounded_file(file, result_file_limit), file);
+    } catch (const std::runtime_error& e) {
+        throw RenderError(std::string(e.what()) + " (not a step file as Plastica writes it)");
+    }
     auto grid = read_xml<vtkXMLUnstructuredGridReader, vtkUnstructuredGrid>(file, "VTK unstructured grid (.vtu)");
     if (grid->GetNumberOfPoints() == 0)
         throw RenderError(file + ": holds no points");

@@ -302,3 +302,25 @@ TEST_CASE("A full disk while drawing exits 3 and run.json says so", "[untrusted]
     CHECK_THAT(r.output, Catch::Contains("No space left on device"));
     CHECK(run.value("status", "") == "output_failed");
 }
+
+TEST_CASE("A step file whose data header claims 2^63 bytes or 1e12 points is refused by render, naming the file", "[untrusted]") {
+    // VTK's reader trusted the appended data's size header and died with SIGSEGV; Plastica's own
+    // reader checks every offset and size against the file before VTK sees it.
+    const fs::path dir = fresh_folder("vtu_header");
+    const Result run = command("run " + model("ring_elastic.toml") + " -o " + (dir / "ring").string() + " --no-render -q");
+    REQUIRE(run.code == 0);
+    const fs::path step = dir / "ring" / "vtu" / "step_000005.vtu";
+    const std::string original = read(step);
+    const std::size_t data = original.find('_', original.find("<AppendedData")) + 1;
+    std::string huge = original;
+    for (int b = 0; b < 8; ++b) huge[data + static_cast<std::size_t>(b)] = static_cast<char>(b == 7 ? 0x7f : 0xff);
+    std::string many = original;
+    const std::size_t points = many.find("NumberOfPoints=\"") + 16;
+    many.replace(points, many.find('"', points) - points, "1000000000000");
+    for (const std::string& crafted : {huge, many}) {
+        write(step, crafted);
+        const Result drawn = command("render " + (dir / "ring").string() + " --steps 5 -q -o " + (dir / "pictures").string());
+        CHECK(drawn.code == 2);
+        CHECK_THAT(drawn.output, Catch::Contains("step_000005.vtu"));
+    }
+}

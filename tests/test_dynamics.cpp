@@ -6,11 +6,13 @@
 #include "dynamics_reader.hpp"
 #include "scene_error.hpp"
 #include "scene_reader.hpp"
+#include "scratch_files.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -383,5 +385,23 @@ TEST_CASE("A transient stage without mass is refused where it is chosen, naming 
     } catch (const SceneError& e) {
         CHECK_THAT(e.what(), Catch::Contains("massless.toml:") && Catch::Contains("'analysis.scheme'") && Catch::Contains("density") &&
                                  Catch::Contains("[[mass]]"));
+    }
+}
+
+TEST_CASE("A record header announcing more values than a file can hold is refused, naming the file") {
+    // NPTS= 99999999999 threw std::out_of_range past the reader (exit 134); a plain header's
+    // count of 1e20 overflowed its conversion to int.
+    const std::filesystem::path dir = scratch::fresh_folder("npts");
+    const std::vector<std::string> headers = {"NPTS= 99999999999, DT= .0200 SEC", "1e20 0.02", "NPTS= 12.5, DT= 0.02"};
+    for (const std::string& header : headers) {
+        CAPTURE(header);
+        scratch::write(dir / "huge.at2", "PEER NGA STRONG MOTION DATABASE\nrecord\nACCELERATION IN UNITS OF G\n" + header + "\n0.1 0.2\n");
+        const std::string text = sdof("[[ground_motion]]\nfile = \"" + (dir / "huge.at2").string() + "\"\nunits = 1.0\n", 0.02, 1.0);
+        try {
+            (void)read_scene_text(text, "shaken.toml");
+            FAIL("read");
+        } catch (const SceneError& e) {
+            CHECK_THAT(e.what(), Catch::Contains("shaken.toml:") && Catch::Contains("'ground_motion[1].file'") && Catch::Contains("NPTS"));
+        }
     }
 }
