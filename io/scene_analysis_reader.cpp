@@ -70,6 +70,14 @@ void SceneBuilder::read_stages(TomlTableReader& top) {
         if (s.scheme == Scheme::transient) {
             s.transient = read_transient(r);
             check_transient_step(r, s.transient, model_);
+            // Each stage is held to 10⁷ steps, and so are all of them together.
+            double steps = s.transient.duration / s.transient.time_step;
+            if (a.scheme == Scheme::transient) steps += a.transient.duration / a.transient.time_step;
+            for (const StageSpec& before : model_.stages)
+                if (before.scheme == Scheme::transient) steps += before.transient.duration / before.transient.time_step;
+            if (steps > 1e7)
+                r.fail("duration", "the transient stages take " + std::to_string(static_cast<long long>(steps)) +
+                                       " steps in all, more than 10⁷: lengthen the steps or shorten the durations");
             r.finish();
             model_.stages.push_back(s);
             continue;

@@ -405,3 +405,14 @@ TEST_CASE("A record header announcing more values than a file can hold is refuse
         }
     }
 }
+
+TEST_CASE("Transient stages are held to ten million steps together, not only each") {
+    const std::string stage = "[[stage]]\nscheme = \"transient\"\ntime_step = 0.001\nduration = 6000.0\n";
+    const std::string text = sdof("[[initial_velocity]]\nat = [1.0, 0.0]\nv = [0.01, 0.0]\n", 0.001, 6000.0) + stage;
+    try {
+        (void)read_scene_text(text, "long.toml");
+        FAIL("read");
+    } catch (const SceneError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("long.toml:") && Catch::Contains("'stage[1].duration'") && Catch::Contains("12000000 steps in all"));
+    }
+}
