@@ -1,5 +1,5 @@
 // Where a scene's results go when no -o is given. What may be done in that folder, and by
-// whom, is io/output_folder.hpp's.
+// whom, is io/folders/output_folder.hpp's.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // libFuzzer target: a step file of a result series of someone else's making, read back by
-// plastica.open (io/vtu_reader.hpp). It must give a dataset or a VtuReadError — never a crash,
+// plastica.open (io/results/vtu_reader.hpp). It must give a dataset or a VtuReadError — never a crash,
 // an uncaught exception or a read past the bytes.
 #include "vtu_reader.hpp"
 

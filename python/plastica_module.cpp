@@ -1,7 +1,7 @@
 // The Python extension `plastica._plastica`: reads a scene (a file, TOML text, or the TOML text
 // of a dict), runs it with the GIL released, and keeps every converged step, so that Python gets
 // the curve and run.json as the command line writes them, each step's arrays by the result
-// schema's names (io/step_dataset.hpp), and the same files on request. python/plastica/ wraps it.
+// schema's names (io/results/step_dataset.hpp), and the same files on request. python/plastica/ wraps it.
 #include "analysis/eigen_at_step.hpp"
 #include "analysis/path_following.hpp"
 #include "atomic_file.hpp"

@@ -1,5 +1,5 @@
 // The mesh built from generated members without a scene file: shared nodes where members meet,
-// a closed ring, explicit nodes, and the refusals the reader locates (io/mesh_builder.hpp).
+// a closed ring, explicit nodes, and the refusals the reader locates (io/scene/mesh_builder.hpp).
 #include "mesh_builder.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// The model-building steps of io/model_building.hpp on models made in code (no scene file):
+// The model-building steps of io/scene/model_building.hpp on models made in code (no scene file):
 // line loads lumped to nodes, tributary lengths, the members' normal at a node, what the
 // reported load measures, and the cantilever the closed form describes.
 #include "model_building.hpp"

@@ -1,4 +1,4 @@
-// The scene schema (io/scene_schema.cpp) is the one place a key is declared: models/README.md
+// The scene schema (io/scene/scene_schema.cpp) is the one place a key is declared: models/README.md
 // carries its tables as generated, the reader takes every default from it, every scene reads
 // without asking for an undeclared key; tests/test_study.cpp checks that studies vary the keys it marks.
 #include "scene_overrides.hpp"

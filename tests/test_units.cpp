@@ -1,5 +1,5 @@
 // Numbers with units: [units] names the scene's length and force, and a dimensioned value may be
-// written "210 GPa", "300 mm", "-49.1 kN/m" (io/units.hpp). The same frame in kN·m numbers, in
+// written "210 GPa", "300 mm", "-49.1 kN/m" (io/scene/units.hpp). The same frame in kN·m numbers, in
 // strings with units, and in N·mm gives one load-factor curve.
 #include "analysis_helpers.hpp"
 #include "units.hpp"

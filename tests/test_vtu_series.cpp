@@ -309,7 +309,7 @@ TEST_CASE("Every shipped scene writes exactly the schema's arrays it needs, of t
 }
 
 TEST_CASE("Each array group writes the arrays it declares and no others in their order", "[output]") {
-    // A row of the schema and the code that fills it live in one file of io/arrays/: a group
+    // A row of the schema and the code that fills it live in one file of io/results/arrays/: a group
     // that wrote an array it does not declare (or left out one it does) would break that.
     std::size_t groups_run = 0;
     for (const fs::path& scene : shipped_scenes()) {

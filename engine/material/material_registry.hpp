@@ -19,7 +19,7 @@ struct MaterialParameterError : std::invalid_argument {
     std::string key;
 };
 
-// A key of a law's own, with its range [min, max) and what it means (io/scene_schema.cpp
+// A key of a law's own, with its range [min, max) and what it means (io/scene/scene_schema.cpp
 // declares it under `[[material]]` for that law).
 struct LawParameter {
     std::string name;

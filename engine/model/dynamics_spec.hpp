@@ -1,5 +1,5 @@
 // What a scene says about motion in time: masses, damping, time series, ground motions and
-// initial velocities (plain data, read by io/dynamics_reader.cpp; used by engine/dynamics/).
+// initial velocities (plain data, read by io/scene/dynamics_reader.cpp; used by engine/dynamics/).
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
-// An output array is declared where it is filled: each file of io/arrays/ holds a group of the
+// An output array is declared where it is filled: each file of io/results/arrays/ holds a group of the
 // result schema's rows (result_schema.hpp) and the function that fills them from one step, and
-// io/arrays/output_arrays.cpp lists the groups in the order a VTU lays them out. A new array is
+// io/results/arrays/output_arrays.cpp lists the groups in the order a VTU lays them out. A new array is
 // a row and its lines of code in a group; a new group one file and one line in that list.
 #pragma once
 

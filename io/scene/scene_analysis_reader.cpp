@@ -1,4 +1,4 @@
-// The scene's [analysis], [[stage]]s, load patterns and [report] (io/scene_builder.hpp).
+// The scene's [analysis], [[stage]]s, load patterns and [report] (io/scene/scene_builder.hpp).
 #include "scene_builder.hpp"
 
 #include "dynamics_reader.hpp"

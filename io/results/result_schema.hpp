@@ -1,7 +1,7 @@
 // The result schema: the one list of what a result series holds. Every array of a
 // step's VTU and of base.vtp, with where it lives, its type and components, what it measures and
 // which scenes have it, and the codes of the integer states. Each row is declared beside the code
-// that fills it (io/arrays/); this header gathers them. The VTU writer, the render stage,
+// that fills it (io/results/arrays/); this header gathers them. The VTU writer, the render stage,
 // docs/output.md's table (`plastica schema` prints it; a test compares) and the tests read it, so a
 // name is spelled in one place.
 #pragma once

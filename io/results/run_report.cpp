@@ -50,7 +50,7 @@ std::string to_json(const RunReport& r) {
     }
     j["status"] = to_string(r.summary.status);
     j["reason"] = r.summary.reason;
-    // What looks like a unit mistake (io/scene_warnings.hpp): the run went ahead.
+    // What looks like a unit mistake (io/scene/scene_warnings.hpp): the run went ahead.
     if (const std::vector<std::string> warnings = scene_warnings(*r.model); !warnings.empty()) j["warnings"] = warnings;
     if (!r.drawing_notes.empty()) j["drawing_notes"] = r.drawing_notes;
     j["steps"] = r.summary.steps;

@@ -1,6 +1,6 @@
 // What one step of a result series holds, as named arrays (xml_dataset.hpp): the deformed
 // points, the elements as lines, and the result schema's point, cell and field arrays that the
-// scene has (result_schema.hpp), each group filled by its file in io/arrays/. The series writer serialises it to a VTU file; the Python
+// scene has (result_schema.hpp), each group filled by its file in io/results/arrays/. The series writer serialises it to a VTU file; the Python
 // module hands its arrays to numpy.
 #pragma once
 

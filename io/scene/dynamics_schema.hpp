@@ -1,4 +1,4 @@
-// The scene's keys for motion in time (io/scene_schema.hpp declares the rest): [[mass]],
+// The scene's keys for motion in time (io/scene/scene_schema.hpp declares the rest): [[mass]],
 // [damping], [[time_series]], [[ground_motion]], [[initial_velocity]], and the transient keys of
 // [analysis] and [[stage]].
 #pragma once

@@ -1,4 +1,4 @@
-// The scene's [units], [[material]]s and [[section]]s (io/scene_builder.hpp).
+// The scene's [units], [[material]]s and [[section]]s (io/scene/scene_builder.hpp).
 #include "scene_builder.hpp"
 
 #include "dynamics_reader.hpp"

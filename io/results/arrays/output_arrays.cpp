@@ -2,7 +2,7 @@
 
 namespace plastica {
 
-// The groups, one file each in io/arrays/.
+// The groups, one file each in io/results/arrays/.
 OutputGroup identity_arrays();
 OutputGroup kinematic_arrays();
 OutputGroup motion_arrays();

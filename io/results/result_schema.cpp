@@ -13,7 +13,7 @@ namespace {
 
 using Q = Quantity;
 
-// The groups' rows (io/arrays/), points first, then cells, fields and base.vtp's: the order of
+// The groups' rows (io/results/arrays/), points first, then cells, fields and base.vtp's: the order of
 // each place is the groups' order.
 std::vector<Array> gather_schema() {
     std::vector<Array> rows;

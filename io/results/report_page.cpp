@@ -190,7 +190,7 @@ std::string point(const nlohmann::json& at) {
     return at.is_array() && at.size() == 2 ? "(" + number(at[0]) + ", " + number(at[1]) + ")" : "";
 }
 
-// The model the run computed (run.json "model", io/model_description.hpp): sections with their
+// The model the run computed (run.json "model", io/results/model_description.hpp): sections with their
 // capacities, supports, loads by pattern, the analysis and its stages.
 std::string model_section(const nlohmann::json& model) {
     std::string html = "<h2>Model</h2>\n";

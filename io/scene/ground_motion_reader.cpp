@@ -1,5 +1,5 @@
 // [[ground_motion]]: acceleration records (PEER AT2 or plain), their units and their time step
-// against the analysis' (io/dynamics_reader.hpp).
+// against the analysis' (io/scene/dynamics_reader.hpp).
 #include "dynamics_reader.hpp"
 
 #include "bounded_file.hpp"

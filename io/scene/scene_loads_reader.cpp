@@ -1,4 +1,4 @@
-// The scene's supports, loads, prescribed displacements and foundations (io/scene_builder.hpp).
+// The scene's supports, loads, prescribed displacements and foundations (io/scene/scene_builder.hpp).
 #include "scene_builder.hpp"
 
 #include "dynamics_reader.hpp"

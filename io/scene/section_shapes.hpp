@@ -1,6 +1,6 @@
 // The section shapes a scene may name (`[[section]] shape = …`): each with the builder of its
 // fibre layout and elastic properties. A new shape is one entry here and its keys in
-// io/scene_schema.cpp (declared `.of("shape name")`).
+// io/scene/scene_schema.cpp (declared `.of("shape name")`).
 #pragma once
 
 #include "model/model.hpp"

@@ -1,5 +1,5 @@
 // Reads one TOML table of a scene with located errors: typed, range-checked values as the scene
-// schema declares them (io/scene_schema.hpp), and at the end a check that every key is declared
+// schema declares them (io/scene/scene_schema.hpp), and at the end a check that every key is declared
 // (with the nearest declared key as a suggestion). Given the scene's units, a number of a named
 // dimension may also be written as a string with its unit.
 #pragma once
@@ -23,7 +23,7 @@ inline constexpr std::size_t max_text_bytes = 1024;
 
 class TomlTableReader {
 public:
-    // Reads `table` as io/scene_schema.cpp declares `spec`: every typed read below takes the
+    // Reads `table` as io/scene/scene_schema.cpp declares `spec`: every typed read below takes the
     // key's type, range, dimension and default from there, and asking for a key the schema
     // does not declare is a programming error (std::logic_error).
     TomlTableReader(const toml::table& table, std::string file, std::string path, const TableSpec& spec,

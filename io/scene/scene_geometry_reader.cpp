@@ -1,5 +1,5 @@
 // The scene's geometry: [[node]]s, [[line]]s, [[arc]]s, [[element]]s, member-end releases,
-// [[self_contact]], and the nodes the other tables name (io/scene_builder.hpp).
+// [[self_contact]], and the nodes the other tables name (io/scene/scene_builder.hpp).
 #include "scene_builder.hpp"
 
 #include "dynamics_reader.hpp"

@@ -234,7 +234,7 @@ TableSpec section_table_spec() {
             .about("`i`: a rolled profile by name, its plates and root radius from the tables of EN 10365 (`\"IPE 300\"`, "
                    "`\"HEA 200\"`, `\"HEB 200\"`, `\"HEM 200\"`, in mm) and the AISC Shapes Database v15.0 (`\"W14x90\"`, in "
                    "inches), converted to the scene's [units] (which it needs); chooses `shape = \"i\"` by itself; the list: "
-                   "io/rolled_profiles.cpp"),
+                   "io/scene/rolled_profiles.cpp"),
         number("depth", dimension::length).positive().needed().of("i").about("`i`: doubly symmetric I/H section, overall depth"),
         number("flange_width", dimension::length).positive().needed().of("i").about("`i`"),
         number("flange_thickness", dimension::length).positive().needed().of("i").about("`i`; two flanges thinner than the depth"),
@@ -604,7 +604,7 @@ const TableSpec* find_scene_table(const std::string& name) {
 
 const TableSpec& scene_table(const std::string& name) {
     if (const TableSpec* t = find_scene_table(name)) return *t;
-    throw std::logic_error("io/scene_schema.cpp declares no table '" + name + "'");
+    throw std::logic_error("io/scene/scene_schema.cpp declares no table '" + name + "'");
 }
 
 const TableSpec& scene_root_table() {

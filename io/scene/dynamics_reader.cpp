@@ -1,5 +1,5 @@
 // [[mass]], [damping], [[time_series]], [[initial_velocity]] and the transient keys
-// (io/dynamics_reader.hpp); [[ground_motion]] in ground_motion_reader.cpp.
+// (io/scene/dynamics_reader.hpp); [[ground_motion]] in ground_motion_reader.cpp.
 #include "dynamics_reader.hpp"
 
 #include "scene_error.hpp"

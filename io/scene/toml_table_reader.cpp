@@ -63,7 +63,7 @@ void TomlTableReader::fail(const std::string& key, const std::string& what) cons
 
 const KeySpec& TomlTableReader::declared(const std::string& key) const {
     if (const KeySpec* k = spec_.find(key, group_)) return *k;
-    throw std::logic_error("io/scene_schema.cpp declares no key '" + key + "' in " + spec_.heading() +
+    throw std::logic_error("io/scene/scene_schema.cpp declares no key '" + key + "' in " + spec_.heading() +
                            (group_.empty() ? "" : " for " + spec_.group_key + " = \"" + group_ + "\""));
 }
 
