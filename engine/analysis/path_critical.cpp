@@ -79,6 +79,13 @@ bool PathFollowing::left_the_path(const Eigen::VectorXd& u_saved, double lambda_
     return std::abs(along) < branch_alignment * length;
 }
 
+bool PathFollowing::leapt_past_limit(double step_h) {
+    const int passed = solver_.negative_pivots() - committed_pivots_;
+    if (passed <= 1 || pivot_cuts_in_step_ >= most_pivot_cuts || std::abs(0.5 * step_h) < stages_.current().min_increment) return false;
+    ++pivot_cuts_in_step_;
+    return true;
+}
+
 bool PathFollowing::cut_for_pivots(double step_h) {
     const AnalysisSpec& stage = stages_.current();
     const int passed = solver_.negative_pivots() - committed_pivots_;

@@ -196,9 +196,11 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             continue;
         }
         // Critical points of elastic structures are passed one at a time, each located
-        // (path_critical.cpp); a yielding structure's pivots turn with its hinges and fibres.
+        // (path_critical.cpp); a yielding structure's pivots turn with its hinges and fibres,
+        // but a step that turns many at once leapt past its limit (a column's first arc, too long,
+        // onto its squashed straight state): it is cut too.
         const bool tracks_critical_points = model_.tracks_critical_points();
-        if (tracks_critical_points && cut_for_pivots(step_h)) {
+        if (tracks_critical_points ? cut_for_pivots(step_h) : leapt_past_limit(step_h)) {
             roll_back(u_saved, lambda_saved);
             ++summary.cut_steps;
             h = 0.5 * step_h;
@@ -216,7 +218,7 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             continue;
         }
         std::optional<CriticalPoint> critical;
-        if (jumped) critical = CriticalPoint{CriticalKind::bifurcation, step_ + 1, lambda_saved, 0.0, 0.0, {}, true};
+        if (jumped && tracks_critical_points) critical = CriticalPoint{CriticalKind::bifurcation, step_ + 1, lambda_saved, 0.0, 0.0, {}, true};
         if (tracks_critical_points && solver_.negative_pivots() > committed_pivots_) {
             std::optional<double> land_at;
             critical = locate_critical_point(u_saved, lambda_saved, land_at);

@@ -130,6 +130,9 @@ private:
     // Critical points (analysis/path_critical.cpp). A converged step that turns more than one
     // pivot negative is cut (at most ten times) so that they are met one at a time.
     bool cut_for_pivots(double step_h);
+    // A yielding structure's step that turned more than one pivot negative (hinges and fibres
+    // turn them one or two at a time as they yield): cut likewise, down to the least increment.
+    bool leapt_past_limit(double step_h);
     // A converged step that left the path it started on (a bifurcation jumped onto its stable
     // buckled branch, which no pivot shows): its increment turns more than 45° from the path's
     // tangent at its start (cosine below branch_alignment). Checked on steps that took

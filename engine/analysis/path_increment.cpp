@@ -83,8 +83,11 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
     // unloaded to nothing.
     const bool travel_back = constraint.scheme() == Scheme::arc_length && !model_.has_forces(factors_.driven) &&
                              !stages_.turned_back() && result.load_change * stages_.direction() < 0.0;
-    if (!branch && result.converged() && path_.traced_a_step() &&
-        (travel_back || constraint.turned_back(result.increment, previous_increment_))) {
+    // A state with an element crushed through its length or stretched past any beam's reach is
+    // no equilibrium of the structure: the step is cut (load control then finds the limit load).
+    const bool beyond_reach = result.converged() && !a.allow_crossing && !element_beyond_reach(model_, u_).empty();
+    if (!branch && result.converged() &&
+        (beyond_reach || (path_.traced_a_step() && (travel_back || constraint.turned_back(result.increment, previous_increment_))))) {
         result.rule = Acceptance::none;
         result.failure = NewtonFailure::turned_back;
     }

@@ -70,7 +70,8 @@ StepResult& PathFollowing::make_result(int step, int iterations, Acceptance rule
 
 std::string PathFollowing::check_penetration() const {
     if (stages_.current().allow_crossing) return {};
-    const std::string found = find_penetration(model_, u_, lambda_, &factors_);
+    std::string found = element_beyond_reach(model_, u_);
+    if (found.empty()) found = find_penetration(model_, u_, lambda_, &factors_);
     if (found.empty()) return found;
     return "step " + std::to_string(step_) + ": " + found;
 }

@@ -36,6 +36,30 @@ std::string where(const Point& p) {
 
 } // namespace
 
+std::string element_beyond_reach(const Model& model, const Eigen::VectorXd& u) {
+    // An element whose chord has shortened to half its length has passed the reach of beam
+    // theory (a column crushed through its own length, or stretched out beyond it, inverted);
+    // one stretched to three times its length has too (a plastic string's steel breaks at a
+    // fraction of that). Neither is a state of the structure. First-order geometry moves no chord.
+    if (model.analysis.geometry == Geometry::first_order) return {};
+    for (std::size_t e = 0; e < model.elements.size(); ++e) {
+        const ElementSpec& element = model.elements[e];
+        const std::size_t i = static_cast<std::size_t>(element.node_i), j = static_cast<std::size_t>(element.node_j);
+        const Node &ni = model.nodes[i], &nj = model.nodes[j];
+        const Point a{ni.x + u[dofs_per_node * i], ni.y + u[dofs_per_node * i + 1]};
+        const Point b{nj.x + u[dofs_per_node * j], nj.y + u[dofs_per_node * j + 1]};
+        const double initial = std::hypot(nj.x - ni.x, nj.y - ni.y);
+        const double stretch = initial > 0.0 ? std::hypot(b.x - a.x, b.y - a.y) / initial : 1.0;
+        if (stretch < 0.5 || stretch > 3.0) {
+            std::ostringstream s;
+            s << "element " << e << " between " << where(a) << " and " << where(b) << " is " << 100.0 * stretch
+              << " % of its length: it has passed through its own length or stretched beyond any beam's reach";
+            return s.str();
+        }
+    }
+    return {};
+}
+
 std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor,
                              const PatternFactors* factors) {
     const std::size_t n = model.nodes.size();

@@ -11,6 +11,10 @@
 
 namespace plastica {
 
+// Empty, or the first element whose chord is shorter than half its length or longer than three
+// times it: beyond any beam's reach (an element crushed through itself). Empty in first order.
+std::string element_beyond_reach(const Model& model, const Eigen::VectorXd& u);
+
 // Empty when the state is admissible; otherwise says what crossed what, and where. Moving bases
 // stand where the pattern factors put them at λ = load_factor (the first stage's when none given).
 std::string find_penetration(const Model& model, const Eigen::VectorXd& u, double load_factor,
