@@ -226,6 +226,8 @@ TEST_CASE("Yielding columns reach their displacement-controlled capacity under a
         {"force", 12.0, 0.012, "scheme = \"arc_length\"\nincrement = 0.2\ntarget_displacement = 0.3\n"},
         {"force", 18.0, 0.018, "scheme = \"arc_length\"\nincrement = 0.3\ntarget_displacement = 0.45\n"},
         {"displacement", 3.0, 0.0006, "scheme = \"load_control\"\nincrement = 250.0\ntarget_load_factor = 20000.0\n"},
+        // A load step past the buckling load onto the straight column, two pivots negative, at 5 266 kN.
+        {"displacement", 18.0, 0.0036, "scheme = \"load_control\"\nincrement = 250.0\ntarget_load_factor = 20000.0\n"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.plasticity, c.length, c.scheme);

@@ -35,18 +35,6 @@ PathFollowing::PathFollowing(const Model& model)
     if (model.transient()) stepper_ = std::make_unique<TimeStepper>(model_, system_);
 }
 
-bool PathFollowing::extrapolating() const {
-    return constraint_->starts_from_extrapolation() && path_.ready();
-}
-
-PathPosition PathFollowing::position() const {
-    return {lambda_, stages_.control_value(u_), arc_length_};
-}
-
-double PathFollowing::path_parameter() const {
-    return constraint_->parameter(position());
-}
-
 std::string PathFollowing::initial_mechanism() {
     // A structure in motion from the start is held by its inertia: a free body may fly.
     if (model_.analysis.scheme == Scheme::transient) return {};
@@ -196,9 +184,8 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             continue;
         }
         // Critical points of elastic structures are passed one at a time, each located
-        // (path_critical.cpp); a yielding structure's pivots turn with its hinges and fibres,
-        // but a step that turns many at once leapt past its limit (a column's first arc, too long,
-        // onto its squashed straight state): it is cut too.
+        // (path_critical.cpp); a yielding structure's step that turns many pivots at once leapt
+        // past its limit (a column's long first arc onto its squashed straight state): cut too.
         const bool tracks_critical_points = model_.tracks_critical_points();
         if (tracks_critical_points ? cut_for_pivots(step_h) : leapt_past_limit(step_h)) {
             roll_back(u_saved, lambda_saved);
@@ -206,9 +193,18 @@ RunSummary PathFollowing::run_steps(const std::vector<StepObserver>& observers, 
             h = 0.5 * step_h;
             continue;
         }
-        // A bifurcation jumped onto a stable branch shows no pivot: the step is cut until it
-        // stays on its path (and passes the pivot) or can be cut no more.
-        // One that cannot be cut further is published as passing it, onto the branch it took.
+        // Under load control a yielding step that turned a pivot negative ended past its limit
+        // load: cut to the least increment, then the limit (path_limits.cpp).
+        if (!tracks_critical_points && ended_past_limit_load()) {
+            roll_back(u_saved, lambda_saved);
+            ++summary.cut_steps;
+            h = 0.5 * step_h;
+            if (std::abs(h) >= stage.min_increment) continue;
+            stop(limit_beyond(step_h));
+            break;
+        }
+        // A bifurcation jumped onto a stable branch shows no pivot: the step is cut until it stays
+        // on its path, or, cut no more, is published as passing it onto the branch it took.
         const bool jumped = tracks_critical_points && outcome.iterations >= branch_check_iterations && left_the_path(u_saved, lambda_saved);
         if (jumped && branch_cuts_in_step_ < most_branch_cuts && std::abs(0.5 * step_h) >= stage.min_increment) {
             roll_back(u_saved, lambda_saved);

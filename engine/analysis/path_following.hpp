@@ -112,6 +112,10 @@ private:
     // Under load control of forces, a step cut to a thousandth of the stage's increment whose
     // tangent shows no stiffness in the load direction: the limit load.
     std::optional<StopReason> limit_on_plateau(double step_h);
+    // The limit load at the current state, where a load step of step_h beyond it, cut to the
+    // least increment, still turned the tangent's pivot negative.
+    StopReason limit_beyond(double step_h);
+    bool ended_past_limit_load() const;
     // The next stage drives its pattern under its constraint; returns its first increment.
     double begin_next_stage();
     // The path watch starts on the current stage (analysis/path_watch.hpp).

@@ -134,6 +134,24 @@ std::optional<StopReason> PathFollowing::limit_on_plateau(double step_h) {
     return diagnose_failed_step(at_limit);
 }
 
+bool PathFollowing::ended_past_limit_load() const {
+    // A state the load cannot hold (a column straight again, or crushed): more negative pivots
+    // than where the step started, under load control of forces.
+    return constraint_->prescribes_load_factor() && model_.has_forces(factors_.driven) && solver_.negative_pivots() > committed_pivots_;
+}
+
+StopReason PathFollowing::limit_beyond(double step_h) {
+    FailedStep at_limit;
+    at_limit.step = step_;
+    at_limit.load_factor = lambda_;
+    at_limit.limit = true;
+    std::ostringstream evidence;
+    evidence << "a load step of " << step_h << " beyond it turned the tangent's pivot negative";
+    at_limit.limit_evidence = evidence.str();
+    at_limit.plastic_sites = plastic_sites(model_, system_);
+    return diagnose_failed_step(at_limit);
+}
+
 bool PathFollowing::tangent_shows_limit(double below) {
     // The state the system was last evaluated at is at or beyond a limit point when its
     // tangent has a negative pivot, or when its stiffness in the load direction (Bergan's

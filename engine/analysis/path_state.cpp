@@ -119,4 +119,16 @@ void PathFollowing::watch_stage() {
     watch_.begin_stage(watched, lambda_ < 0.0 ? -1.0 : 1.0, lambda_);
 }
 
+bool PathFollowing::extrapolating() const {
+    return constraint_->starts_from_extrapolation() && path_.ready();
+}
+
+PathPosition PathFollowing::position() const {
+    return {lambda_, stages_.control_value(u_), arc_length_};
+}
+
+double PathFollowing::path_parameter() const {
+    return constraint_->parameter(position());
+}
+
 } // namespace plastica
