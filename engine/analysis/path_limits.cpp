@@ -137,7 +137,8 @@ std::optional<StopReason> PathFollowing::limit_on_plateau(double step_h) {
 bool PathFollowing::ended_past_limit_load() const {
     // A state the load cannot hold (a column straight again, or crushed): more negative pivots
     // than where the step started, under load control of forces.
-    return constraint_->prescribes_load_factor() && model_.has_forces(factors_.driven) && solver_.negative_pivots() > committed_pivots_;
+    return constraint_->prescribes_load_factor() && model_.has_forces(factors_.driven) && !stages_.turned_back() &&
+           solver_.negative_pivots() > committed_pivots_;
 }
 
 StopReason PathFollowing::limit_beyond(double step_h) {
