@@ -67,7 +67,7 @@ bool PathFollowing::left_the_path(const Eigen::VectorXd& u_saved, double lambda_
     if (!(length > 0.0)) return false;
     const SparseMatrix K0 = tangent_at(u_saved, lambda_saved);
     if (!check_solver_.factorize(K0)) return false;
-    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+    const Eigen::VectorXd f = load_direction();
     const Eigen::VectorXd t = check_solver_.solve(f);
     const double t_norm = t.norm();
     if (!(t_norm > 0.0) || !t.allFinite()) return false;
@@ -119,7 +119,7 @@ CriticalPoint PathFollowing::locate_critical_point(const Eigen::VectorXd& u_save
     // the step taken (as the arc-length predictor is: Feng's criterion): a load that turned
     // back has passed its maximum, a limit point; one that rises on past a pivot turned
     // negative has met a bifurcation.
-    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+    const Eigen::VectorXd f = load_direction();
     const double along = previous_increment_.size() == f.size() ? previous_increment_.dot(solver_.solve(f)) : 1.0;
     found.kind = along * (lambda_past >= 0.0 ? 1.0 : -1.0) > 0.0 ? CriticalKind::bifurcation : CriticalKind::limit;
     // The eigenvalue of the tangent that passed zero, followed along the step: the tangent

@@ -116,6 +116,9 @@ private:
     // least increment, still turned the tangent's pivot negative.
     StopReason limit_beyond(double step_h);
     bool ended_past_limit_load() const;
+    // The driven pattern's load on the free DOFs, less the coupling of its prescribed
+    // displacements: the right-hand side of the path's tangent, K⁻¹f.
+    Eigen::VectorXd load_direction() const;
     // The next stage drives its pattern under its constraint; returns its first increment.
     double begin_next_stage();
     // The path watch starts on the current stage (analysis/path_watch.hpp).

@@ -85,7 +85,7 @@ NewtonResult PathFollowing::attempt_increment(double h, const RunControl& contro
                              !stages_.turned_back() && result.load_change * stages_.direction() < 0.0;
     // A state with an element crushed through its length or stretched past any beam's reach is
     // no equilibrium of the structure: the step is cut (load control then finds the limit load).
-    const bool beyond_reach = result.converged() && !a.allow_crossing && !element_beyond_reach(model_, u_).empty();
+    const bool beyond_reach = !branch && result.converged() && !a.allow_crossing && !element_beyond_reach(model_, u_).empty();
     if (!branch && result.converged() &&
         (beyond_reach || (path_.traced_a_step() && (travel_back || constraint.turned_back(result.increment, previous_increment_))))) {
         result.rule = Acceptance::none;

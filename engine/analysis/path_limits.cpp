@@ -33,7 +33,7 @@ constexpr double stiffened_step_hardening = 1e-4;
 
 double PathFollowing::load_flexibility() {
     if (system_.free_count() == 0 || !solver_.factorize(system_.tangent())) return 0.0;
-    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+    const Eigen::VectorXd f = load_direction();
     return f.dot(solver_.solve(f));
 }
 
@@ -167,7 +167,7 @@ bool PathFollowing::tangent_shows_limit(double below) {
         limit_evidence_ = std::to_string(solver_.negative_pivots()) + " negative pivot(s)";
         return true;
     }
-    const Eigen::VectorXd f = system_.gather(system_.load()) - system_.coupling();
+    const Eigen::VectorXd f = load_direction();
     const double flexibility = f.dot(solver_.solve(f));
     if (initial_flexibility_ > 0.0 && flexibility > 0.0) {
         const double stiffness = initial_flexibility_ / flexibility;

@@ -131,4 +131,8 @@ double PathFollowing::path_parameter() const {
     return constraint_->parameter(position());
 }
 
+Eigen::VectorXd PathFollowing::load_direction() const {
+    return system_.gather(system_.load()) - system_.coupling();
+}
+
 } // namespace plastica
